@@ -1,0 +1,51 @@
+# Install rules and the CMake package, so that an integrator's own project can do
+#
+#   find_package(hush CONFIG REQUIRED)
+#   target_link_libraries(app PRIVATE hush::rhi hush::shaders)
+#
+# Installed: the static libraries, their public headers, the `hush` CLI, and
+# <libdir>/cmake/hush/{hushConfig,hushConfigVersion,hushTargets}.cmake.
+# tests/consumer proves it by building a small project against an installed tree.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(HUSH_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/hush"
+    CACHE STRING "Where the hush CMake package files are installed, relative to the prefix")
+
+# Consumers see hush::rhi and hush::shaders, whatever the targets are called here.
+set_target_properties(hush_rhi PROPERTIES EXPORT_NAME rhi)
+set_target_properties(hush_shaders PROPERTIES EXPORT_NAME shaders)
+
+install(TARGETS hush_rhi hush_shaders
+  EXPORT hushTargets
+  ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+  LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+  INCLUDES DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+
+# Public headers keep their <hush/<layer>/...> paths.
+foreach(layer_include IN ITEMS rhi/include shaders/include)
+  install(DIRECTORY "${PROJECT_SOURCE_DIR}/${layer_include}/hush"
+          DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
+          FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
+endforeach()
+
+if(TARGET hush)
+  install(TARGETS hush RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+endif()
+
+install(EXPORT hushTargets
+  NAMESPACE hush::
+  FILE hushTargets.cmake
+  DESTINATION "${HUSH_INSTALL_CMAKEDIR}")
+
+configure_package_config_file(
+  "${CMAKE_CURRENT_LIST_DIR}/hushConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/hushConfig.cmake"
+  INSTALL_DESTINATION "${HUSH_INSTALL_CMAKEDIR}")
+# 0.x: minor versions may break the API, so only the same minor version matches.
+write_basic_package_version_file(
+  "${PROJECT_BINARY_DIR}/hushConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}"
+  COMPATIBILITY SameMinorVersion)
+install(FILES "${PROJECT_BINARY_DIR}/hushConfig.cmake" "${PROJECT_BINARY_DIR}/hushConfigVersion.cmake"
+        DESTINATION "${HUSH_INSTALL_CMAKEDIR}")

@@ -1,0 +1,37 @@
+#pragma once
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <hush/rhi/bind_group.hpp>
+#include <hush/rhi/shader.hpp>
+
+namespace hush::rhi {
+
+// An explicit layout, for sharing bind groups between pipelines. The shader's
+// reflected bindings must each be present in it with the same kind and format.
+struct PipelineLayoutDesc {
+    std::vector<BindGroupLayout> bindGroupLayouts;
+    uint32_t pushConstantBytes = 0;
+};
+
+struct ComputePipelineDesc {
+    std::string label;
+    ShaderModule module;
+    std::string entryPoint = "main";
+    std::optional<PipelineLayoutDesc> layout;   // empty: layout "auto", reflected
+};
+
+class ComputePipeline : public Handle<detail::ComputePipelineImpl> {
+public:
+    using Handle::Handle;
+    const std::string& label() const;
+    // The layout of descriptor set `set` (reflected or explicit).
+    BindGroupLayout getBindGroupLayout(uint32_t set) const;
+    uint32_t bindGroupLayoutCount() const;
+    uint32_t pushConstantBytes() const;
+    std::array<uint32_t, 3> workgroupSize() const;
+};
+
+} // namespace hush::rhi

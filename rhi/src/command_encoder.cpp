@@ -1,0 +1,248 @@
+// CommandEncoder and ComputePassEncoder: record into one VkCommandBuffer, checking
+// the things that would otherwise be undefined behaviour (unbound sets, calls out of
+// order) and keeping every object used alive until the submission completes.
+#include <algorithm>
+
+#include "objects.hpp"
+#include "vk_check.hpp"
+#include "vk_convert.hpp"
+
+namespace hush::rhi {
+namespace detail {
+
+CommandEncoderImpl::~CommandEncoderImpl() {
+    if (!external && pool != VK_NULL_HANDLE) device->vk.vkDestroyCommandPool(device->device, pool, nullptr);
+}
+
+CommandBufferImpl::~CommandBufferImpl() {
+    if (!external && pool != VK_NULL_HANDLE) device->vk.vkDestroyCommandPool(device->device, pool, nullptr);
+}
+
+void CommandEncoderImpl::requireRecording(const char* call) const {
+    if (finished)
+        fail(ErrorKind::InvalidArgument, std::string(call) + " on command encoder '" + label + "' after finish()");
+}
+
+void CommandEncoderImpl::requireOutsidePass(const char* call) const {
+    requireRecording(call);
+    if (inPass)
+        fail(ErrorKind::InvalidArgument, std::string(call) + " on command encoder '" + label +
+                                             "' while compute pass '" + passLabel + "' is open; call end() first");
+}
+
+std::shared_ptr<CommandEncoderImpl> makeEncoder(const std::shared_ptr<DeviceImpl>& device, const std::string& label,
+                                                VkCommandBuffer external) {
+    auto impl = std::make_shared<CommandEncoderImpl>();
+    impl->device = device;
+    impl->label = label;
+    if (external != VK_NULL_HANDLE) {
+        impl->external = true;
+        impl->commandBuffer = external;
+        return impl;
+    }
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    poolInfo.queueFamilyIndex = device->queueFamily;
+    checkVk(device->vk.vkCreateCommandPool(device->device, &poolInfo, nullptr, &impl->pool), "vkCreateCommandPool");
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = impl->pool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    checkVk(device->vk.vkAllocateCommandBuffers(device->device, &alloc, &impl->commandBuffer), "vkAllocateCommandBuffers");
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    checkVk(device->vk.vkBeginCommandBuffer(impl->commandBuffer, &begin), "vkBeginCommandBuffer");
+    return impl;
+}
+
+namespace {
+
+void checkQueryIndex(const QuerySetImpl& set, uint32_t index) {
+    if (index >= set.count)
+        fail(ErrorKind::InvalidArgument, "query index " + std::to_string(index) + " is outside query set '" + set.label +
+                                             "' (" + std::to_string(set.count) + " queries)");
+}
+
+void recordTimestamp(CommandEncoderImpl& enc, const std::shared_ptr<QuerySetImpl>& set, uint32_t index) {
+    checkQueryIndex(*set, index);
+    // A query must be reset before it is written; resetting here keeps query sets
+    // reusable frame after frame without the caller tracking them.
+    enc.device->vk.vkCmdResetQueryPool(enc.commandBuffer, set->pool, index, 1);
+    // ALL_COMMANDS: the tick is taken when everything recorded before has finished,
+    // so a pass's begin..end spans its own work and not the wait for earlier passes.
+    enc.device->vk.vkCmdWriteTimestamp2(enc.commandBuffer, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, set->pool, index);
+    enc.keepAlive.push_back(set);
+}
+
+} // namespace
+} // namespace detail
+
+using namespace detail;
+
+CommandEncoder Device::createCommandEncoder(const CommandEncoderDesc& desc) const {
+    checked(impl_, "Device");
+    return CommandEncoder(makeEncoder(impl_, desc.label, VK_NULL_HANDLE));
+}
+
+ComputePassEncoder CommandEncoder::beginComputePass(const ComputePassDesc& desc) {
+    auto* enc = checked(impl_, "CommandEncoder");
+    enc->requireOutsidePass("beginComputePass");
+    const auto& ts = desc.timestampWrites;
+    if (ts.querySet) {
+        auto set = ts.querySet.shared();
+        if (!enc->device->info.limits.timestampsSupported)
+            fail(ErrorKind::Unsupported, "compute pass '" + desc.label + "' asks for timestamps, but adapter '" +
+                                             enc->device->info.name + "' has none on its compute queue");
+        checkQueryIndex(*set, ts.endIndex);
+        if (ts.beginIndex == ts.endIndex)
+            fail(ErrorKind::InvalidArgument, "compute pass '" + desc.label + "' uses query " +
+                                                 std::to_string(ts.beginIndex) + " for both its begin and end timestamps");
+        recordTimestamp(*enc, set, ts.beginIndex);
+        enc->passQueries = set;
+        enc->passEndQuery = ts.endIndex;
+    }
+    enc->inPass = true;
+    enc->passLabel = desc.label;
+    enc->pipeline.reset();
+    enc->boundGroups.clear();
+    enc->pushConstantBytesSet = 0;
+    return ComputePassEncoder(enc);
+}
+
+void ComputePassEncoder::setPipeline(const ComputePipeline& pipeline) {
+    auto* enc = encoder_;
+    if (!enc || !enc->inPass) fail(ErrorKind::InvalidArgument, "setPipeline on a compute pass that has ended");
+    auto impl = pipeline.shared();
+    checked(impl, "ComputePipeline");
+    enc->device->vk.vkCmdBindPipeline(enc->commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, impl->pipeline);
+    // Vulkan keeps compatible descriptor sets across pipeline switches; hush asks for
+    // them again so that what a dispatch reads is always what the caller set.
+    enc->pipeline = impl;
+    enc->boundGroups.assign(impl->setLayouts.size(), nullptr);
+    enc->pushConstantBytesSet = 0;
+    enc->keepAlive.push_back(impl);
+}
+
+void ComputePassEncoder::setBindGroup(uint32_t index, const BindGroup& group) {
+    auto* enc = encoder_;
+    if (!enc || !enc->inPass) fail(ErrorKind::InvalidArgument, "setBindGroup on a compute pass that has ended");
+    if (!enc->pipeline)
+        fail(ErrorKind::InvalidArgument, "setBindGroup in compute pass '" + enc->passLabel + "' before setPipeline");
+    auto impl = group.shared();
+    checked(impl, "BindGroup");
+    const auto& p = *enc->pipeline;
+    if (index >= p.setLayouts.size())
+        fail(ErrorKind::BindingMismatch, "bind group '" + impl->label + "' set at index " + std::to_string(index) +
+                                             ", but pipeline '" + p.label + "' has " +
+                                             std::to_string(p.setLayouts.size()) + " bind group layouts");
+    const auto& expected = p.setLayouts[index];
+    if (impl->layout != expected && impl->layout->entries != expected->entries)
+        fail(ErrorKind::BindingMismatch, "bind group '" + impl->label + "' (made for " + impl->layout->origin +
+                                             ") does not match pipeline '" + p.label + "' set " + std::to_string(index) +
+                                             " (" + expected->origin + ")");
+    enc->device->vk.vkCmdBindDescriptorSets(enc->commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, index, 1,
+                                            &impl->set, 0, nullptr);
+    enc->boundGroups[index] = impl;
+    enc->keepAlive.push_back(impl);
+}
+
+void ComputePassEncoder::setPushConstants(const void* data, uint32_t bytes, uint32_t offset) {
+    auto* enc = encoder_;
+    if (!enc || !enc->inPass) fail(ErrorKind::InvalidArgument, "setPushConstants on a compute pass that has ended");
+    if (!enc->pipeline)
+        fail(ErrorKind::InvalidArgument, "setPushConstants in compute pass '" + enc->passLabel + "' before setPipeline");
+    const auto& p = *enc->pipeline;
+    if (bytes == 0 || offset % 4 || bytes % 4 || offset + bytes > p.pushConstantBytes)
+        fail(ErrorKind::InvalidArgument, "push constants [" + std::to_string(offset) + ", " + std::to_string(offset + bytes) +
+                                             ") for pipeline '" + p.label + "', which takes " +
+                                             std::to_string(p.pushConstantBytes) + " bytes (4-byte aligned)");
+    enc->device->vk.vkCmdPushConstants(enc->commandBuffer, p.layout, VK_SHADER_STAGE_COMPUTE_BIT, offset, bytes, data);
+    enc->pushConstantBytesSet = std::max(enc->pushConstantBytesSet, offset + bytes);
+}
+
+void ComputePassEncoder::dispatchWorkgroups(uint32_t x, uint32_t y, uint32_t z) {
+    auto* enc = encoder_;
+    if (!enc || !enc->inPass) fail(ErrorKind::InvalidArgument, "dispatch on a compute pass that has ended");
+    if (!enc->pipeline) fail(ErrorKind::InvalidArgument, "dispatch in compute pass '" + enc->passLabel + "' before setPipeline");
+    const auto& p = *enc->pipeline;
+    for (uint32_t set = 0; set < p.setUsed.size(); ++set)
+        if (p.setUsed[set] && !enc->boundGroups[set])
+            fail(ErrorKind::BindingMismatch, "dispatch in compute pass '" + enc->passLabel + "': pipeline '" + p.label +
+                                                 "' needs a bind group at set " + std::to_string(set) + ", none is set");
+    if (enc->pushConstantBytesSet < p.shaderPushConstantBytes)
+        fail(ErrorKind::InvalidArgument, "dispatch in compute pass '" + enc->passLabel + "': pipeline '" + p.label +
+                                             "' reads " + std::to_string(p.shaderPushConstantBytes) +
+                                             " bytes of push constants, " + std::to_string(enc->pushConstantBytesSet) +
+                                             " were set");
+    const auto& limits = enc->device->limits;
+    if (x > limits.maxComputeWorkGroupCount[0] || y > limits.maxComputeWorkGroupCount[1] ||
+        z > limits.maxComputeWorkGroupCount[2])
+        fail(ErrorKind::Unsupported, "dispatch of " + std::to_string(x) + "x" + std::to_string(y) + "x" +
+                                         std::to_string(z) + " workgroups in pass '" + enc->passLabel +
+                                         "' exceeds the adapter's maxComputeWorkgroupCount");
+    if (x == 0 || y == 0 || z == 0) return;
+    enc->device->vk.vkCmdDispatch(enc->commandBuffer, x, y, z);
+}
+
+void ComputePassEncoder::dispatchThreads(uint32_t x, uint32_t y, uint32_t z) {
+    if (!encoder_ || !encoder_->pipeline)
+        fail(ErrorKind::InvalidArgument, "dispatchThreads before setPipeline");
+    const auto size = encoder_->pipeline->workgroupSize;
+    auto groups = [](uint32_t n, uint32_t s) { return (n + s - 1) / s; };
+    dispatchWorkgroups(groups(x, size[0]), groups(y, size[1]), groups(z, size[2]));
+}
+
+void ComputePassEncoder::end() {
+    auto* enc = encoder_;
+    if (!enc || !enc->inPass) fail(ErrorKind::InvalidArgument, "end() on a compute pass that has already ended");
+    enc->inPass = false;
+    if (enc->passQueries) {
+        recordTimestamp(*enc, enc->passQueries, enc->passEndQuery);
+        enc->passQueries.reset();
+    }
+    enc->pipeline.reset();
+    enc->boundGroups.clear();
+    encoder_ = nullptr;
+}
+
+void CommandEncoder::resetQuerySet(const QuerySet& set, uint32_t first, uint32_t count) {
+    auto* enc = checked(impl_, "CommandEncoder");
+    enc->requireOutsidePass("resetQuerySet");
+    auto impl = set.shared();
+    checked(impl, "QuerySet");
+    if (count == 0) return;
+    checkQueryIndex(*impl, first + count - 1);
+    enc->device->vk.vkCmdResetQueryPool(enc->commandBuffer, impl->pool, first, count);
+    enc->keepAlive.push_back(impl);
+}
+
+void CommandEncoder::writeTimestamp(const QuerySet& set, uint32_t index) {
+    auto* enc = checked(impl_, "CommandEncoder");
+    enc->requireOutsidePass("writeTimestamp");
+    checked(set.shared(), "QuerySet");
+    if (!enc->device->info.limits.timestampsSupported)
+        fail(ErrorKind::Unsupported, "adapter '" + enc->device->info.name + "' has no timestamps on its compute queue");
+    recordTimestamp(*enc, set.shared(), index);
+}
+
+CommandBuffer CommandEncoder::finish() {
+    auto* enc = checked(impl_, "CommandEncoder");
+    enc->requireOutsidePass("finish");
+    enc->finished = true;
+    auto out = std::make_shared<CommandBufferImpl>();
+    out->device = enc->device;
+    out->label = enc->label;
+    out->external = enc->external;
+    out->keepAlive = std::move(enc->keepAlive);
+    out->commandBuffer = enc->commandBuffer;
+    if (!enc->external) {
+        checkVk(enc->device->vk.vkEndCommandBuffer(enc->commandBuffer), "vkEndCommandBuffer for '" + enc->label + "'");
+        out->pool = enc->pool;   // the command buffer now owns the pool
+        enc->pool = VK_NULL_HANDLE;
+    }
+    return CommandBuffer(std::move(out));
+}
+
+const std::string& CommandBuffer::label() const { return checked(impl_, "CommandBuffer")->label; }
+
+} // namespace hush::rhi

@@ -1,0 +1,84 @@
+// Queue: submissions numbered on a timeline semaphore. A command buffer keeps what
+// it uses alive until its submission completes.
+#include "objects.hpp"
+#include "vk_check.hpp"
+
+namespace hush::rhi {
+
+using namespace detail;
+
+SubmissionId Queue::submit(const CommandBuffer& commands) { return submit(std::span(&commands, 1)); }
+
+SubmissionId Queue::submit(std::span<const CommandBuffer> commands) {
+    auto* device = device_.get();
+    std::vector<VkCommandBufferSubmitInfo> buffers;
+    for (const auto& cb : commands) {
+        auto* impl = checked(cb.shared(), "CommandBuffer");
+        if (impl->external)
+            fail(ErrorKind::InvalidArgument, "command buffer '" + impl->label +
+                                                 "' records into an engine's VkCommandBuffer; the engine submits it");
+        if (impl->submitted)
+            fail(ErrorKind::InvalidArgument, "command buffer '" + impl->label + "' was already submitted; record a new one");
+        if (impl->device.get() != device)
+            fail(ErrorKind::InvalidArgument, "command buffer '" + impl->label + "' belongs to another device");
+        VkCommandBufferSubmitInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+        info.commandBuffer = impl->commandBuffer;
+        buffers.push_back(info);
+    }
+
+    std::lock_guard lock(device->queueMutex);
+    device->retireCompleted();
+    const SubmissionId id = device->lastSubmitted + 1;
+    VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    signal.semaphore = device->timeline;
+    signal.value = id;
+    signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    submit.commandBufferInfoCount = uint32_t(buffers.size());
+    submit.pCommandBufferInfos = buffers.data();
+    submit.signalSemaphoreInfoCount = 1;
+    submit.pSignalSemaphoreInfos = &signal;
+    checkVk(device->vk.vkQueueSubmit2(device->queue, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit2");
+    device->lastSubmitted = id;
+
+    InFlight flight;
+    flight.id = id;
+    for (const auto& cb : commands) {
+        cb.impl()->submitted = true;
+        flight.keepAlive.push_back(cb.shared());
+    }
+    device->inFlight.push_back(std::move(flight));
+    return id;
+}
+
+void Queue::wait(SubmissionId id) {
+    auto* device = device_.get();
+    if (id > device->lastSubmitted)
+        fail(ErrorKind::InvalidArgument, "waiting for submission " + std::to_string(id) + ", but only " +
+                                             std::to_string(device->lastSubmitted) + " were submitted");
+    VkSemaphoreWaitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO};
+    info.semaphoreCount = 1;
+    info.pSemaphores = &device->timeline;
+    info.pValues = &id;
+    checkVk(device->vk.vkWaitSemaphores(device->device, &info, UINT64_MAX), "waiting for submission");
+    std::lock_guard lock(device->queueMutex);
+    device->retireCompleted();
+}
+
+void Queue::waitIdle() {
+    SubmissionId last;
+    {
+        std::lock_guard lock(device_->queueMutex);
+        last = device_->lastSubmitted;
+    }
+    if (last > 0) wait(last);
+}
+
+bool Queue::isComplete(SubmissionId id) const { return device_->completedValue() >= id; }
+
+SubmissionId Queue::lastSubmitted() const {
+    std::lock_guard lock(device_->queueMutex);
+    return device_->lastSubmitted;
+}
+
+} // namespace hush::rhi

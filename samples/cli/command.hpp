@@ -1,0 +1,35 @@
+#pragma once
+// A `hush` subcommand. Each lives in its own command_<name>.cpp and is listed in
+// main.cpp's table; adding one (render, denoise) touches nothing else.
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace hush::cli {
+
+// Exit codes shared by every subcommand (documented in `hush --help`).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailed = 1;   // ran, and the result was wrong (e.g. self-check)
+inline constexpr int kExitError = 2;    // could not run: bad arguments, no device, ...
+
+struct Command {
+    std::string_view name;
+    std::string_view summary;   // one line, for `hush --help`
+    std::string_view usage;     // the full text of `hush <name> --help`
+    // Runs with the arguments after the subcommand's name (--help already handled).
+    // Returns the exit code; throws hush::Error when it cannot run.
+    int (*run)(std::span<const std::string_view> args);
+};
+
+const Command& infoCommand();
+
+// Takes the value of an option given as "--name value" or "--name=value" at
+// args[i] (advancing i past a separate value). Returns false if args[i] is not
+// that option; throws hush::Error (InvalidArgument) if the value is missing.
+bool takeOption(std::span<const std::string_view> args, size_t& i, std::string_view name,
+                std::string& value);
+
+// hush::Error (InvalidArgument) for an argument a subcommand does not know.
+[[noreturn]] void unknownArgument(std::string_view command, std::string_view arg);
+
+} // namespace hush::cli

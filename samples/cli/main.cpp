@@ -1,0 +1,134 @@
+// `hush`: the command line. Finds the subcommand, prints help, and turns errors
+// into messages and exit codes instead of crashes.
+#include <array>
+#include <cstdio>
+#include <exception>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <hush/rhi/error.hpp>
+
+#include "command.hpp"
+
+namespace hush::cli {
+namespace {
+
+// Every subcommand, in the order `hush --help` lists them.
+std::array<const Command*, 1> commands() {
+    return {&infoCommand()};
+}
+
+std::string commandNames() {
+    std::string names;
+    for (const Command* command : commands()) {
+        names += names.empty() ? "" : ", ";
+        names += command->name;
+    }
+    return names;
+}
+
+void printUsage(std::FILE* out) {
+    std::fprintf(out,
+                 "hush %s: real-time denoising of path-traced images, on Vulkan.\n"
+                 "\n"
+                 "usage: hush <command> [options]\n"
+                 "       hush <command> --help\n"
+                 "\n"
+                 "commands:\n",
+                 HUSH_VERSION);
+    for (const Command* command : commands()) {
+        std::fprintf(out, "  %-10.*s %.*s\n", int(command->name.size()), command->name.data(),
+                     int(command->summary.size()), command->summary.data());
+    }
+    std::fprintf(out,
+                 "\n"
+                 "environment:\n"
+                 "  HUSH_ADAPTER=<text>       use the first adapter whose name contains <text>\n"
+                 "  HUSH_VALIDATION=1         enable the Vulkan validation layer (with sync validation)\n"
+                 "  HUSH_VULKAN_LOADER=<path> open this Vulkan loader instead of libvulkan.so.1\n"
+                 "\n"
+                 "exit status: 0 success, 1 a check failed, 2 could not run (the message says why)\n");
+}
+
+bool isHelp(std::string_view arg) {
+    return arg == "--help" || arg == "-h" || arg == "help";
+}
+
+int dispatch(std::span<const std::string_view> args) {
+    if (args.empty()) {
+        printUsage(stderr);
+        return kExitError;
+    }
+    if (isHelp(args[0])) {
+        printUsage(stdout);
+        return kExitOk;
+    }
+    if (args[0] == "--version") {
+        std::printf("hush %s\n", HUSH_VERSION);
+        return kExitOk;
+    }
+    for (const Command* command : commands()) {
+        if (command->name != args[0]) {
+            continue;
+        }
+        auto rest = args.subspan(1);
+        for (std::string_view arg : rest) {
+            if (arg == "--help" || arg == "-h") {
+                std::printf("%.*s", int(command->usage.size()), command->usage.data());
+                return kExitOk;
+            }
+        }
+        return command->run(rest);
+    }
+    throw Error(ErrorKind::InvalidArgument,
+                "unknown command '" + std::string(args[0]) + "'; available commands: " +
+                    commandNames() + " (see hush --help)");
+}
+
+} // namespace
+
+bool takeOption(std::span<const std::string_view> args, size_t& i, std::string_view name,
+                std::string& value) {
+    std::string_view arg = args[i];
+    if (arg.substr(0, name.size()) != name) {
+        return false;
+    }
+    if (arg.size() > name.size()) {
+        if (arg[name.size()] != '=') {
+            return false;   // a longer option that merely starts with `name`
+        }
+        value = std::string(arg.substr(name.size() + 1));
+        return true;
+    }
+    if (i + 1 >= args.size()) {
+        throw Error(ErrorKind::InvalidArgument, "option " + std::string(name) + " needs a value");
+    }
+    value = std::string(args[++i]);
+    return true;
+}
+
+void unknownArgument(std::string_view command, std::string_view arg) {
+    throw Error(ErrorKind::InvalidArgument, "unknown argument '" + std::string(arg) + "' for hush " +
+                                                std::string(command) + " (see hush " +
+                                                std::string(command) + " --help)");
+}
+
+} // namespace hush::cli
+
+int main(int argc, char** argv) {
+    std::vector<std::string_view> args(argv + 1, argv + argc);
+    try {
+        return hush::cli::dispatch(args);
+    } catch (const hush::Error& error) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "hush: error (%s): %s\n", hush::toString(error.kind()), error.what());
+        return hush::cli::kExitError;
+    } catch (const std::exception& error) {
+        // Not a hush::Error: a bug in hush rather than in the input; say so.
+        std::fflush(stdout);
+        std::fprintf(stderr, "hush: internal error: %s\n", error.what());
+        return hush::cli::kExitError;
+    }
+}

@@ -18,6 +18,16 @@ CommandBufferImpl::~CommandBufferImpl() {
     if (!external && pool != VK_NULL_HANDLE) device->vk.vkDestroyCommandPool(device->device, pool, nullptr);
 }
 
+namespace {
+
+void beginRecording(DeviceImpl& device, VkCommandBuffer cmd, bool reusable) {
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = reusable ? 0 : VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    checkVk(device.vk.vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+}
+
+} // namespace
+
 void CommandEncoderImpl::requireRecording(const char* call) const {
     if (finished)
         fail(ErrorKind::InvalidArgument, std::string(call) + " on command encoder '" + label + "' after finish()");
@@ -31,10 +41,12 @@ void CommandEncoderImpl::requireOutsidePass(const char* call) const {
 }
 
 std::shared_ptr<CommandEncoderImpl> makeEncoder(const std::shared_ptr<DeviceImpl>& device, const std::string& label,
-                                                VkCommandBuffer external) {
+                                                VkCommandBuffer external, bool reusable, bool trackLifetimes) {
     auto impl = std::make_shared<CommandEncoderImpl>();
     impl->device = device;
     impl->label = label;
+    impl->reusable = reusable && external == VK_NULL_HANDLE;
+    impl->trackLifetimes = trackLifetimes;
     if (external != VK_NULL_HANDLE) {
         impl->external = true;
         impl->commandBuffer = external;
@@ -49,9 +61,17 @@ std::shared_ptr<CommandEncoderImpl> makeEncoder(const std::shared_ptr<DeviceImpl
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
     checkVk(device->vk.vkAllocateCommandBuffers(device->device, &alloc, &impl->commandBuffer), "vkAllocateCommandBuffers");
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    checkVk(device->vk.vkBeginCommandBuffer(impl->commandBuffer, &begin), "vkBeginCommandBuffer");
+    if (impl->reusable) {
+        // The command buffer owns the pool: it may still be executing when the encoder goes.
+        auto cb = std::make_shared<CommandBufferImpl>();
+        cb->device = device;
+        cb->label = label;
+        cb->pool = impl->pool;
+        cb->commandBuffer = impl->commandBuffer;
+        impl->pool = VK_NULL_HANDLE;
+        impl->reusableBuffer = std::move(cb);
+    }
+    beginRecording(*device, impl->commandBuffer, impl->reusable);
     return impl;
 }
 
@@ -71,7 +91,7 @@ void recordTimestamp(CommandEncoderImpl& enc, const std::shared_ptr<QuerySetImpl
     // ALL_COMMANDS: the tick is taken when everything recorded before has finished,
     // so a pass's begin..end spans its own work and not the wait for earlier passes.
     enc.device->vk.vkCmdWriteTimestamp2(enc.commandBuffer, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, set->pool, index);
-    enc.keepAlive.push_back(set);
+    enc.retain(set);
 }
 
 } // namespace
@@ -81,7 +101,7 @@ using namespace detail;
 
 CommandEncoder Device::createCommandEncoder(const CommandEncoderDesc& desc) const {
     checked(impl_, "Device");
-    return CommandEncoder(makeEncoder(impl_, desc.label, VK_NULL_HANDLE));
+    return CommandEncoder(makeEncoder(impl_, desc.label, VK_NULL_HANDLE, desc.reusable, desc.trackLifetimes));
 }
 
 ComputePassEncoder CommandEncoder::beginComputePass(const ComputePassDesc& desc) {
@@ -120,7 +140,7 @@ void ComputePassEncoder::setPipeline(const ComputePipeline& pipeline) {
     enc->pipeline = impl;
     enc->boundGroups.assign(impl->setLayouts.size(), nullptr);
     enc->pushConstantBytesSet = 0;
-    enc->keepAlive.push_back(impl);
+    enc->retain(impl);
 }
 
 void ComputePassEncoder::setBindGroup(uint32_t index, const BindGroup& group) {
@@ -143,7 +163,7 @@ void ComputePassEncoder::setBindGroup(uint32_t index, const BindGroup& group) {
     enc->device->vk.vkCmdBindDescriptorSets(enc->commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, index, 1,
                                             &impl->set, 0, nullptr);
     enc->boundGroups[index] = impl;
-    enc->keepAlive.push_back(impl);
+    enc->retain(impl);
 }
 
 void ComputePassEncoder::setPushConstants(const void* data, uint32_t bytes, uint32_t offset) {
@@ -213,7 +233,7 @@ void CommandEncoder::resetQuerySet(const QuerySet& set, uint32_t first, uint32_t
     if (count == 0) return;
     checkQueryIndex(*impl, first + count - 1);
     enc->device->vk.vkCmdResetQueryPool(enc->commandBuffer, impl->pool, first, count);
-    enc->keepAlive.push_back(impl);
+    enc->retain(impl);
 }
 
 void CommandEncoder::writeTimestamp(const QuerySet& set, uint32_t index) {
@@ -229,6 +249,13 @@ CommandBuffer CommandEncoder::finish() {
     auto* enc = checked(impl_, "CommandEncoder");
     enc->requireOutsidePass("finish");
     enc->finished = true;
+    if (enc->reusable) {
+        checkVk(enc->device->vk.vkEndCommandBuffer(enc->commandBuffer), "vkEndCommandBuffer for '" + enc->label + "'");
+        auto& cb = enc->reusableBuffer;
+        cb->submitted = false;
+        cb->keepAlive.swap(enc->keepAlive);   // swap, not move: both keep their capacity
+        return CommandBuffer(cb);
+    }
     auto out = std::make_shared<CommandBufferImpl>();
     out->device = enc->device;
     out->label = enc->label;
@@ -241,6 +268,24 @@ CommandBuffer CommandEncoder::finish() {
         enc->pool = VK_NULL_HANDLE;
     }
     return CommandBuffer(std::move(out));
+}
+
+void CommandEncoder::reset() {
+    auto* enc = checked(impl_, "CommandEncoder");
+    if (!enc->reusable)
+        fail(ErrorKind::InvalidArgument, "reset() on command encoder '" + enc->label +
+                                             "', which was not created with reusable = true");
+    auto& cb = *enc->reusableBuffer;
+    if (cb.submitted && enc->device->completedValue() < cb.submission)
+        fail(ErrorKind::InvalidArgument, "reset() on command encoder '" + enc->label + "' while submission " +
+                                             std::to_string(cb.submission) + " still executes; wait for it first");
+    if (enc->inPass) fail(ErrorKind::InvalidArgument, "reset() on command encoder '" + enc->label + "' with a pass open");
+    checkVk(enc->device->vk.vkResetCommandPool(enc->device->device, cb.pool, 0), "vkResetCommandPool");
+    cb.keepAlive.clear();
+    cb.submitted = false;
+    enc->keepAlive.clear();
+    enc->finished = false;
+    beginRecording(*enc->device, enc->commandBuffer, true);
 }
 
 const std::string& CommandBuffer::label() const { return checked(impl_, "CommandBuffer")->label; }

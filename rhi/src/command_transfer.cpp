@@ -73,13 +73,18 @@ void CommandEncoder::barrier(std::initializer_list<TextureBarrier> textures, std
             std::span<const BufferBarrier>(buffers.begin(), buffers.size()));
 }
 
-void CommandEncoder::barrier(std::span<const TextureBarrier> textures, std::span<const BufferBarrier> buffers) {
+void CommandEncoder::barrier(std::span<const TextureBarrier> textures, std::span<const BufferBarrier> buffers,
+                             std::span<const MemoryBarrier> memory) {
     auto* enc = checked(impl_, "CommandEncoder");
     enc->requireOutsidePass("barrier");
-    std::vector<VkImageMemoryBarrier2> images;
-    images.reserve(textures.size());
+    auto& images = enc->imageBarriers;
+    auto& bufs = enc->bufferBarriers;
+    auto& globals = enc->memoryBarriers;
+    images.clear();
+    bufs.clear();
+    globals.clear();
     for (const auto& b : textures) {
-        auto t = b.texture.shared();
+        const auto& t = b.texture.shared();
         checked(t, "Texture");
         if (b.after == ResourceState::Undefined)
             fail(ErrorKind::InvalidArgument, "barrier on texture '" + t->desc.label + "' to state undefined");
@@ -89,18 +94,16 @@ void CommandEncoder::barrier(std::span<const TextureBarrier> textures, std::span
         barrier.srcAccessMask = src.access;
         barrier.dstStageMask = dst.stages;
         barrier.dstAccessMask = dst.access;
-        barrier.oldLayout = src.layout;
+        barrier.oldLayout = b.discard ? VK_IMAGE_LAYOUT_UNDEFINED : src.layout;
         barrier.newLayout = dst.layout;
         barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         barrier.image = t->image;
         barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
         images.push_back(barrier);
-        enc->keepAlive.push_back(t);
+        enc->retain(t);
     }
-    std::vector<VkBufferMemoryBarrier2> bufs;
-    bufs.reserve(buffers.size());
     for (const auto& b : buffers) {
-        auto buf = b.buffer.shared();
+        const auto& buf = b.buffer.shared();
         checked(buf, "Buffer");
         const auto src = toVk(b.before), dst = toVk(b.after);
         VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
@@ -113,10 +116,21 @@ void CommandEncoder::barrier(std::span<const TextureBarrier> textures, std::span
         barrier.offset = 0;
         barrier.size = VK_WHOLE_SIZE;
         bufs.push_back(barrier);
-        enc->keepAlive.push_back(buf);
+        enc->retain(buf);
     }
-    if (images.empty() && bufs.empty()) return;
+    for (const auto& m : memory) {
+        const auto src = toVk(m.before), dst = toVk(m.after);
+        VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        barrier.srcStageMask = src.stages;
+        barrier.srcAccessMask = src.access;
+        barrier.dstStageMask = dst.stages;
+        barrier.dstAccessMask = dst.access;
+        globals.push_back(barrier);
+    }
+    if (images.empty() && bufs.empty() && globals.empty()) return;
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.memoryBarrierCount = uint32_t(globals.size());
+    dep.pMemoryBarriers = globals.data();
     dep.imageMemoryBarrierCount = uint32_t(images.size());
     dep.pImageMemoryBarriers = images.data();
     dep.bufferMemoryBarrierCount = uint32_t(bufs.size());
@@ -136,8 +150,8 @@ void CommandEncoder::copyBufferToBuffer(const Buffer& src, uint64_t srcOffset, c
                                              std::to_string(dstOffset) + " is out of range");
     VkBufferCopy region{srcOffset, dstOffset, size};
     enc->device->vk.vkCmdCopyBuffer(enc->commandBuffer, src.impl()->buffer, dst.impl()->buffer, 1, &region);
-    enc->keepAlive.push_back(src.shared());
-    enc->keepAlive.push_back(dst.shared());
+    enc->retain(src.shared());
+    enc->retain(dst.shared());
 }
 
 void CommandEncoder::copyBufferToTexture(const BufferCopyLayout& src, const TextureCopyRegion& dst, Extent2D size) {
@@ -149,8 +163,8 @@ void CommandEncoder::copyBufferToTexture(const BufferCopyLayout& src, const Text
     const auto copy = bufferImageCopy(src, dst, size, "copyBufferToTexture");
     enc->device->vk.vkCmdCopyBufferToImage(enc->commandBuffer, src.buffer.impl()->buffer, dst.texture.impl()->image,
                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-    enc->keepAlive.push_back(src.buffer.shared());
-    enc->keepAlive.push_back(dst.texture.shared());
+    enc->retain(src.buffer.shared());
+    enc->retain(dst.texture.shared());
 }
 
 void CommandEncoder::copyTextureToBuffer(const TextureCopyRegion& src, const BufferCopyLayout& dst, Extent2D size) {
@@ -162,8 +176,8 @@ void CommandEncoder::copyTextureToBuffer(const TextureCopyRegion& src, const Buf
     const auto copy = bufferImageCopy(dst, src, size, "copyTextureToBuffer");
     enc->device->vk.vkCmdCopyImageToBuffer(enc->commandBuffer, src.texture.impl()->image,
                                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst.buffer.impl()->buffer, 1, &copy);
-    enc->keepAlive.push_back(src.texture.shared());
-    enc->keepAlive.push_back(dst.buffer.shared());
+    enc->retain(src.texture.shared());
+    enc->retain(dst.buffer.shared());
 }
 
 void CommandEncoder::copyTextureToTexture(const TextureCopyRegion& src, const TextureCopyRegion& dst, Extent2D size) {
@@ -186,8 +200,8 @@ void CommandEncoder::copyTextureToTexture(const TextureCopyRegion& src, const Te
     copy.extent = {size.width, size.height, 1};
     enc->device->vk.vkCmdCopyImage(enc->commandBuffer, src.texture.impl()->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                    dst.texture.impl()->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-    enc->keepAlive.push_back(src.texture.shared());
-    enc->keepAlive.push_back(dst.texture.shared());
+    enc->retain(src.texture.shared());
+    enc->retain(dst.texture.shared());
 }
 
 void CommandEncoder::fillBuffer(const Buffer& buffer, uint32_t value, uint64_t offset, uint64_t size) {
@@ -199,7 +213,7 @@ void CommandEncoder::fillBuffer(const Buffer& buffer, uint32_t value, uint64_t o
         fail(ErrorKind::InvalidArgument, "fillBuffer of '" + buffer.label() + "': range [" + std::to_string(offset) +
                                              ", +" + std::to_string(size) + ") must be 4-byte aligned and inside the buffer");
     enc->device->vk.vkCmdFillBuffer(enc->commandBuffer, buffer.impl()->buffer, offset, size, value);
-    enc->keepAlive.push_back(buffer.shared());
+    enc->retain(buffer.shared());
 }
 
 } // namespace hush::rhi

@@ -30,12 +30,14 @@ uint64_t DeviceImpl::completedValue() const {
 void DeviceImpl::retireCompleted() {
     if (inFlight.empty()) return;
     const uint64_t done = completedValue();
-    while (!inFlight.empty() && inFlight.front().id <= done) inFlight.pop_front();
+    size_t retired = 0;
+    while (retired < inFlight.size() && inFlight[retired].id <= done) ++retired;
+    if (retired) inFlight.erase(inFlight.begin(), inFlight.begin() + ptrdiff_t(retired));
 }
 
 VkDeviceMemory DeviceImpl::allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags required,
                                     VkMemoryPropertyFlags preferred, const std::string& what,
-                                    VkMemoryPropertyFlags* chosenFlags) {
+                                    VkMemoryPropertyFlags* chosenFlags, uint32_t* chosenType) {
     uint32_t chosen = ~0u;
     for (int pass = 0; pass < 2 && chosen == ~0u; ++pass) {
         const VkMemoryPropertyFlags want = pass == 0 ? (required | preferred) : required;
@@ -63,6 +65,7 @@ VkDeviceMemory DeviceImpl::allocate(const VkMemoryRequirements& requirements, Vk
             "allocating " + std::to_string(requirements.size) + " bytes for " + what);
     allocatedBytes += requirements.size;
     if (chosenFlags) *chosenFlags = memory.memoryTypes[chosen].propertyFlags;
+    if (chosenType) *chosenType = chosen;
     return out;
 }
 

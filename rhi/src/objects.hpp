@@ -3,7 +3,6 @@
 // its DeviceImpl, so a device outlives everything made from it.
 #include <array>
 #include <atomic>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -40,9 +39,12 @@ struct InstanceImpl {
     ~InstanceImpl();
 };
 
+// What one submission keeps alive. The common case, one command buffer, needs no
+// heap allocation, so a render graph's frames submit without allocating.
 struct InFlight {
     SubmissionId id = 0;
-    KeepAlive keepAlive;
+    std::shared_ptr<const void> first;
+    KeepAlive more;
 };
 
 struct DeviceImpl {
@@ -62,7 +64,7 @@ struct DeviceImpl {
     VkSemaphore timeline = VK_NULL_HANDLE;
     std::mutex queueMutex;
     SubmissionId lastSubmitted = 0;
-    std::deque<InFlight> inFlight;
+    std::vector<InFlight> inFlight;   // oldest first; capacity is kept between frames
     std::atomic<uint64_t> allocatedBytes{0};
 
     ~DeviceImpl();
@@ -75,7 +77,7 @@ struct DeviceImpl {
     // types with `required` ones. Throws OutOfMemory naming `what`.
     VkDeviceMemory allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags required,
                             VkMemoryPropertyFlags preferred, const std::string& what,
-                            VkMemoryPropertyFlags* chosenFlags = nullptr);
+                            VkMemoryPropertyFlags* chosenFlags = nullptr, uint32_t* chosenType = nullptr);
     void free(VkDeviceMemory memory, uint64_t bytes);
 };
 
@@ -91,10 +93,21 @@ struct BufferImpl {
     ~BufferImpl();
 };
 
+struct MemoryBlockImpl {
+    std::shared_ptr<DeviceImpl> device;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    uint64_t size = 0;
+    uint32_t memoryTypeBits = 0;
+    std::string label;
+    ~MemoryBlockImpl();
+};
+
 struct TextureImpl {
     std::shared_ptr<DeviceImpl> device;
     VkImage image = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;   // null when placed in a MemoryBlock
+    std::shared_ptr<MemoryBlockImpl> block;
+    uint64_t blockOffset = 0;
     uint64_t allocationBytes = 0;
     VkImageView defaultView = VK_NULL_HANDLE;
     TextureDesc desc;
@@ -173,6 +186,7 @@ struct CommandBufferImpl {
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
     bool external = false;
     bool submitted = false;
+    SubmissionId submission = 0;
     std::string label;
     KeepAlive keepAlive;
     ~CommandBufferImpl();
@@ -184,8 +198,16 @@ struct CommandEncoderImpl {
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
     bool external = false;
     bool finished = false;
+    bool reusable = false;
+    bool trackLifetimes = true;
     std::string label;
     KeepAlive keepAlive;
+    std::shared_ptr<CommandBufferImpl> reusableBuffer;   // reusable encoders hand out this one
+
+    // Scratch space for barriers, kept between calls so that recording does not allocate.
+    std::vector<VkImageMemoryBarrier2> imageBarriers;
+    std::vector<VkBufferMemoryBarrier2> bufferBarriers;
+    std::vector<VkMemoryBarrier2> memoryBarriers;
 
     // The open compute pass, if any.
     bool inPass = false;
@@ -197,6 +219,9 @@ struct CommandEncoderImpl {
     uint32_t pushConstantBytesSet = 0;
 
     ~CommandEncoderImpl();
+    template <class T> void retain(const std::shared_ptr<T>& object) {
+        if (trackLifetimes) keepAlive.push_back(object);
+    }
     void requireRecording(const char* call) const;
     void requireOutsidePass(const char* call) const;
 };

@@ -11,7 +11,13 @@ SubmissionId Queue::submit(const CommandBuffer& commands) { return submit(std::s
 
 SubmissionId Queue::submit(std::span<const CommandBuffer> commands) {
     auto* device = device_.get();
-    std::vector<VkCommandBufferSubmitInfo> buffers;
+    // Submitting one command buffer (every frame) must not allocate.
+    constexpr size_t kInline = 8;
+    VkCommandBufferSubmitInfo inlineInfos[kInline];
+    std::vector<VkCommandBufferSubmitInfo> heapInfos;
+    if (commands.size() > kInline) heapInfos.resize(commands.size());
+    VkCommandBufferSubmitInfo* infos = commands.size() > kInline ? heapInfos.data() : inlineInfos;
+    size_t count = 0;
     for (const auto& cb : commands) {
         auto* impl = checked(cb.shared(), "CommandBuffer");
         if (impl->external)
@@ -23,7 +29,7 @@ SubmissionId Queue::submit(std::span<const CommandBuffer> commands) {
             fail(ErrorKind::InvalidArgument, "command buffer '" + impl->label + "' belongs to another device");
         VkCommandBufferSubmitInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
         info.commandBuffer = impl->commandBuffer;
-        buffers.push_back(info);
+        infos[count++] = info;
     }
 
     std::lock_guard lock(device->queueMutex);
@@ -34,20 +40,21 @@ SubmissionId Queue::submit(std::span<const CommandBuffer> commands) {
     signal.value = id;
     signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
     VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-    submit.commandBufferInfoCount = uint32_t(buffers.size());
-    submit.pCommandBufferInfos = buffers.data();
+    submit.commandBufferInfoCount = uint32_t(count);
+    submit.pCommandBufferInfos = infos;
     submit.signalSemaphoreInfoCount = 1;
     submit.pSignalSemaphoreInfos = &signal;
     checkVk(device->vk.vkQueueSubmit2(device->queue, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit2");
     device->lastSubmitted = id;
 
-    InFlight flight;
+    InFlight& flight = device->inFlight.emplace_back();
     flight.id = id;
     for (const auto& cb : commands) {
         cb.impl()->submitted = true;
-        flight.keepAlive.push_back(cb.shared());
+        cb.impl()->submission = id;
+        if (!flight.first) flight.first = cb.shared();
+        else flight.more.push_back(cb.shared());
     }
-    device->inFlight.push_back(std::move(flight));
     return id;
 }
 

@@ -18,6 +18,8 @@ TextureImpl::~TextureImpl() {
     device->free(memory, allocationBytes);
 }
 
+MemoryBlockImpl::~MemoryBlockImpl() { device->free(memory, size); }
+
 TextureViewImpl::~TextureViewImpl() {
     if (ownsView && view != VK_NULL_HANDLE)
         texture->device->vk.vkDestroyImageView(texture->device->device, view, nullptr);
@@ -68,14 +70,9 @@ void validateTextureDesc(const DeviceImpl& device, const TextureDesc& desc) {
 
 using namespace detail;
 
-Texture Device::createTexture(const TextureDesc& desc) const {
-    auto* device = checked(impl_, "Device");
-    validateTextureDesc(*device, desc);
-    const std::string what = "texture '" + desc.label + "'";
+namespace {
 
-    auto impl = std::make_shared<TextureImpl>();
-    impl->device = impl_;
-    impl->desc = desc;
+VkImageCreateInfo imageInfo(const TextureDesc& desc) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = toVk(desc.format);
@@ -87,22 +84,92 @@ Texture Device::createTexture(const TextureDesc& desc) const {
     info.usage = toVkImageUsage(desc.usage);
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    return info;
+}
+
+// Creates the image and binds it to its own allocation, or to `block` at `offset`.
+Texture makeTexture(const std::shared_ptr<DeviceImpl>& devicePtr, const TextureDesc& desc,
+                    const std::shared_ptr<MemoryBlockImpl>& block, uint64_t offset) {
+    auto* device = devicePtr.get();
+    validateTextureDesc(*device, desc);
+    const std::string what = "texture '" + desc.label + "'";
+    auto impl = std::make_shared<TextureImpl>();
+    impl->device = devicePtr;
+    impl->desc = desc;
+    const auto info = imageInfo(desc);
     checkVk(device->vk.vkCreateImage(device->device, &info, nullptr, &impl->image), "vkCreateImage for " + what);
 
     VkMemoryRequirements req{};
     device->vk.vkGetImageMemoryRequirements(device->device, impl->image, &req);
+    VkDeviceMemory memory = VK_NULL_HANDLE;
     try {
-        impl->memory = device->allocate(req, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+        if (block) {
+            if (offset % req.alignment || offset + req.size > block->size || !(req.memoryTypeBits & block->memoryTypeBits))
+                fail(ErrorKind::InvalidArgument,
+                     what + " (" + std::to_string(req.size) + " bytes, alignment " + std::to_string(req.alignment) +
+                         ") does not fit at offset " + std::to_string(offset) + " of memory block '" + block->label +
+                         "' (" + std::to_string(block->size) + " bytes)");
+            memory = block->memory;
+        } else {
+            impl->memory = device->allocate(req, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+            impl->allocationBytes = req.size;
+            memory = impl->memory;
+        }
     } catch (...) {
         device->vk.vkDestroyImage(device->device, impl->image, nullptr);
         impl->image = VK_NULL_HANDLE;
         throw;
     }
-    impl->allocationBytes = req.size;
-    checkVk(device->vk.vkBindImageMemory(device->device, impl->image, impl->memory, 0), "binding memory of " + what);
+    impl->block = block;
+    impl->blockOffset = offset;
+    checkVk(device->vk.vkBindImageMemory(device->device, impl->image, memory, block ? offset : 0),
+            "binding memory of " + what);
     impl->defaultView = createImageView(*device, impl->image, desc.format, 0, desc.mipLevelCount, what);
     return Texture(std::move(impl));
 }
+
+} // namespace
+
+Texture Device::createTexture(const TextureDesc& desc) const {
+    checked(impl_, "Device");
+    return makeTexture(impl_, desc, nullptr, 0);
+}
+
+Texture Device::createTexture(const TextureDesc& desc, const MemoryBlock& block, uint64_t offset) const {
+    checked(impl_, "Device");
+    auto b = checked(block.shared(), "MemoryBlock");
+    if (b->device != impl_) fail(ErrorKind::InvalidArgument, "memory block '" + b->label + "' belongs to another device");
+    return makeTexture(impl_, desc, block.shared(), offset);
+}
+
+MemoryRequirements Device::textureMemoryRequirements(const TextureDesc& desc) const {
+    auto* device = checked(impl_, "Device");
+    validateTextureDesc(*device, desc);
+    const auto info = imageInfo(desc);
+    VkDeviceImageMemoryRequirements query{VK_STRUCTURE_TYPE_DEVICE_IMAGE_MEMORY_REQUIREMENTS};
+    query.pCreateInfo = &info;
+    VkMemoryRequirements2 req{VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
+    device->vk.vkGetDeviceImageMemoryRequirements(device->device, &query, &req);
+    return {req.memoryRequirements.size, req.memoryRequirements.alignment, req.memoryRequirements.memoryTypeBits};
+}
+
+MemoryBlock Device::createMemoryBlock(const MemoryBlockDesc& desc) const {
+    auto* device = checked(impl_, "Device");
+    if (desc.size == 0) fail(ErrorKind::InvalidArgument, "memory block '" + desc.label + "' has size 0");
+    auto impl = std::make_shared<MemoryBlockImpl>();
+    impl->device = impl_;
+    impl->label = desc.label;
+    impl->size = desc.size;
+    VkMemoryRequirements req{desc.size, 1, desc.memoryTypeBits};
+    uint32_t type = 0;
+    impl->memory = device->allocate(req, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "memory block '" + desc.label + "'",
+                                    nullptr, &type);
+    impl->memoryTypeBits = 1u << type;   // a placed texture must accept this one type
+    return MemoryBlock(std::move(impl));
+}
+
+const std::string& MemoryBlock::label() const { return checked(impl_, "MemoryBlock")->label; }
+uint64_t MemoryBlock::size() const { return checked(impl_, "MemoryBlock")->size; }
 
 const std::string& Texture::label() const { return checked(impl_, "Texture")->desc.label; }
 Extent2D Texture::size() const { return checked(impl_, "Texture")->desc.size; }

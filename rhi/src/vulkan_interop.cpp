@@ -17,7 +17,7 @@ void validateTextureDesc(const DeviceImpl& device, const TextureDesc& desc);
 VkImageView createImageView(DeviceImpl& device, VkImage image, Format format, uint32_t baseMip, uint32_t mipCount,
                             const std::string& what);
 std::shared_ptr<CommandEncoderImpl> makeEncoder(const std::shared_ptr<DeviceImpl>& device, const std::string& label,
-                                                VkCommandBuffer external);
+                                                VkCommandBuffer external, bool reusable, bool trackLifetimes);
 
 } // namespace detail
 
@@ -81,7 +81,7 @@ CommandEncoder encodeIntoVulkanCommandBuffer(const Device& device, VkCommandBuff
     checked(device.shared(), "Device");
     if (commandBuffer == VK_NULL_HANDLE)
         fail(ErrorKind::InvalidArgument, "encodeIntoVulkanCommandBuffer: null VkCommandBuffer");
-    return CommandEncoder(makeEncoder(device.shared(), "engine command buffer", commandBuffer));
+    return CommandEncoder(makeEncoder(device.shared(), "engine command buffer", commandBuffer, false, true));
 }
 
 VkDevice vulkanDevice(const Device& device) { return checked(device.shared(), "Device")->device; }

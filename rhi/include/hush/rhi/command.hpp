@@ -19,12 +19,22 @@ struct TextureBarrier {
     Texture texture;
     ResourceState before = ResourceState::Undefined;
     ResourceState after = ResourceState::StorageWrite;
+    // Wait for `before`'s accesses but drop the contents (old layout undefined): a
+    // texture whose memory another texture used, or that is about to be overwritten.
+    bool discard = false;
 };
 
 struct BufferBarrier {
     Buffer buffer;
     ResourceState before = ResourceState::Undefined;
     ResourceState after = ResourceState::StorageWrite;
+};
+
+// A barrier on all memory: what aliased memory needs when one texture's life ends
+// and another's begins in the same bytes.
+struct MemoryBarrier {
+    ResourceState before = ResourceState::General;
+    ResourceState after = ResourceState::General;
 };
 
 struct TimestampWrites {
@@ -81,6 +91,13 @@ public:
 
 struct CommandEncoderDesc {
     std::string label;
+    // A reusable encoder records again after reset(), once its last command buffer's
+    // submission completed, without allocating: what a render graph does every frame.
+    bool reusable = false;
+    // Keep every object recorded alive until the submission completes. A caller that
+    // owns its objects for longer (the render graph) turns this off to record without
+    // touching reference counts.
+    bool trackLifetimes = true;
 };
 
 class CommandEncoder : public Handle<detail::CommandEncoderImpl> {
@@ -90,7 +107,8 @@ public:
     ComputePassEncoder beginComputePass(const ComputePassDesc& desc = {});
 
     // One vkCmdPipelineBarrier2 for all of these.
-    void barrier(std::span<const TextureBarrier> textures, std::span<const BufferBarrier> buffers = {});
+    void barrier(std::span<const TextureBarrier> textures, std::span<const BufferBarrier> buffers = {},
+                 std::span<const MemoryBarrier> memory = {});
     void barrier(std::initializer_list<TextureBarrier> textures,
                  std::initializer_list<BufferBarrier> buffers = {});
     void bufferBarrier(std::initializer_list<BufferBarrier> buffers) { barrier({}, buffers); }
@@ -107,6 +125,9 @@ public:
     void writeTimestamp(const QuerySet& set, uint32_t index);
 
     CommandBuffer finish();
+    // Reusable encoders only: start recording again. Throws if the last command buffer
+    // is still executing (wait for its submission first).
+    void reset();
 };
 
 } // namespace hush::rhi

@@ -11,6 +11,7 @@
 #include <hush/rhi/buffer.hpp>
 #include <hush/rhi/command.hpp>
 #include <hush/rhi/instance.hpp>
+#include <hush/rhi/memory_block.hpp>
 #include <hush/rhi/pipeline.hpp>
 #include <hush/rhi/query_set.hpp>
 #include <hush/rhi/resource_state.hpp>
@@ -76,6 +77,12 @@ public:
 
     Buffer createBuffer(const BufferDesc& desc) const;
     Texture createTexture(const TextureDesc& desc) const;
+    // A texture placed at `offset` in `block`, sharing it with others (memory
+    // aliasing). Textures whose lifetimes overlap must not overlap in the block.
+    Texture createTexture(const TextureDesc& desc, const MemoryBlock& block, uint64_t offset) const;
+    // What a texture of `desc` needs, without creating it.
+    MemoryRequirements textureMemoryRequirements(const TextureDesc& desc) const;
+    MemoryBlock createMemoryBlock(const MemoryBlockDesc& desc) const;
     Sampler createSampler(const SamplerDesc& desc = {}) const;
     ShaderModule createShaderModule(const ShaderModuleDesc& desc) const;
     BindGroupLayout createBindGroupLayout(const BindGroupLayoutDesc& desc) const;

@@ -57,6 +57,22 @@ std::vector<uint64_t> QuerySet::readTicks(uint32_t first, uint32_t count) const 
     return ticks;
 }
 
+void QuerySet::readTicks(uint32_t first, std::span<uint64_t> out) const {
+    auto* impl = checked(impl_, "QuerySet");
+    if (out.empty() || first + out.size() > impl->count)
+        fail(ErrorKind::InvalidArgument, "reading " + std::to_string(out.size()) + " queries from " +
+                                             std::to_string(first) + " of query set '" + impl->label + "', which has " +
+                                             std::to_string(impl->count));
+    // Without the availability bit Vulkan answers VK_NOT_READY when any is missing.
+    const VkResult result = impl->device->vk.vkGetQueryPoolResults(
+        impl->device->device, impl->pool, first, uint32_t(out.size()), out.size_bytes(), out.data(), sizeof(uint64_t),
+        VK_QUERY_RESULT_64_BIT);
+    if (result == VK_NOT_READY)
+        fail(ErrorKind::InvalidArgument, "timestamps of query set '" + impl->label +
+                                             "' are not available: wait for the submission that writes them");
+    checkVk(result, "vkGetQueryPoolResults for query set '" + impl->label + "'");
+}
+
 double QuerySet::elapsedMs(uint32_t beginIndex, uint32_t endIndex) const {
     auto* impl = checked(impl_, "QuerySet");
     const auto begin = readTicks(beginIndex, 1)[0];

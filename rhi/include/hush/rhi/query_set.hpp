@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,8 @@ public:
     // Raw ticks of [first, first + count). Call after the submission that wrote them
     // has completed; throws if a query was never written.
     std::vector<uint64_t> readTicks(uint32_t first, uint32_t count) const;
+    // The same into caller storage, without allocating (per-frame timing reads).
+    void readTicks(uint32_t first, std::span<uint64_t> out) const;
     // Milliseconds between two written timestamps (end - begin).
     double elapsedMs(uint32_t beginIndex, uint32_t endIndex) const;
 };

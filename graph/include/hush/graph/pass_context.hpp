@@ -1,0 +1,50 @@
+#pragma once
+// PassContext: what a pass's execute step records with. It resolves handles to the
+// physical resources of this frame (history ping-pong included) and hands out the
+// bind groups the setup step declared. Nothing here allocates.
+#include <cstdint>
+
+#include <hush/graph/handles.hpp>
+#include <hush/rhi/command.hpp>
+
+namespace hush::graph {
+
+struct CompiledGraph;
+
+class PassContext {
+public:
+    rhi::CommandEncoder& encoder() const { return encoder_; }
+    const rhi::Texture& texture(TextureHandle handle) const;
+    const rhi::Buffer& buffer(BufferHandle handle) const;
+    const rhi::BindGroup& bindGroup(BindGroupHandle handle) const;
+    // False on the first frame and after resetHistory(): the history holds nothing.
+    bool historyValid() const { return historyValid_; }
+    rhi::Extent2D outputSize() const;
+    uint64_t frameIndex() const { return frame_; }
+
+    // The common case: one dispatch of `pipeline` with one bind group (set 0),
+    // optional push constants, covering `x` by `y` threads.
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, const void* params,
+                  uint32_t paramBytes, uint32_t x, uint32_t y = 1);
+    template <class P>
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, const P& params, uint32_t x,
+                  uint32_t y = 1) {
+        dispatch(pipeline, group, &params, uint32_t(sizeof(P)), x, y);
+    }
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, uint32_t x, uint32_t y = 1) {
+        dispatch(pipeline, group, nullptr, 0, x, y);
+    }
+
+    PassContext(const CompiledGraph& graph, rhi::CommandEncoder& encoder, uint32_t parity, bool historyValid,
+                uint64_t frame)
+        : graph_(graph), encoder_(encoder), parity_(parity), historyValid_(historyValid), frame_(frame) {}
+
+private:
+    const CompiledGraph& graph_;
+    rhi::CommandEncoder& encoder_;
+    uint32_t parity_;
+    bool historyValid_;
+    uint64_t frame_;
+};
+
+} // namespace hush::graph

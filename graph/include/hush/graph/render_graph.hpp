@@ -1,0 +1,136 @@
+#pragma once
+// RenderGraph: declare passes and resources once, compile (validate, cull, order,
+// alias, plan barriers, create resources and bind groups), then execute frame after
+// frame. A frame records one command buffer, with a timestamp pair per pass, and
+// allocates nothing; the graph recompiles only when its structure or sizes change.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <hush/graph/compile_steps.hpp>
+#include <hush/graph/graph_model.hpp>
+#include <hush/graph/handles.hpp>
+#include <hush/graph/pass_builder.hpp>
+#include <hush/graph/pass_context.hpp>
+#include <hush/rhi/device.hpp>
+
+namespace hush::graph {
+
+using ExecuteFn = std::function<void(PassContext&)>;
+using SetupFn = std::function<ExecuteFn(PassBuilder&)>;
+using PassId = uint32_t;
+
+struct RenderGraphDesc {
+    std::string label = "graph";
+    uint32_t framesInFlight = 2;   // timings are read from the oldest frame, so reading never stalls
+    bool aliasing = true;          // let transients with disjoint lifetimes share memory
+};
+
+struct ImportDesc {
+    rhi::ResourceState initialState = rhi::ResourceState::SampledRead;   // the state it is in before a frame
+    rhi::ResourceState finalState = rhi::ResourceState::SampledRead;     // the state it must be in after
+};
+
+struct PassTiming {
+    std::string name;
+    double gpuMs = 0.0;
+};
+
+struct GraphTimings {
+    std::vector<PassTiming> passes;   // live passes, in execution order
+    double totalGpuMs = 0.0;          // first pass begin to last pass end, barriers included
+    double cpuRecordMs = 0.0;         // recording the command buffer on the CPU
+    uint64_t frame = 0;               // which frame these are from
+    bool valid = false;               // false until a frame has completed
+};
+
+struct MemoryReport {
+    uint64_t transientAliasedBytes = 0;     // the one memory block all transients share
+    uint64_t transientUnaliasedBytes = 0;   // what they would take, each in its own memory
+    uint64_t historyBytes = 0;              // both halves of every history ping-pong pair
+    uint64_t outputBytes = 0;               // transients marked as outputs (never aliased)
+    uint32_t transientTextures = 0;
+};
+
+struct CompiledGraph;
+
+class RenderGraph {
+public:
+    explicit RenderGraph(rhi::Device device, const RenderGraphDesc& desc = {});
+    ~RenderGraph();
+    RenderGraph(const RenderGraph&) = delete;
+    RenderGraph& operator=(const RenderGraph&) = delete;
+
+    // Declaration. setup runs now, declares the pass's ports and returns its execute step.
+    PassId addPass(const std::string& name, const SetupFn& setup);
+    TextureHandle importTexture(const std::string& name, const rhi::Texture& texture, const ImportDesc& desc = {});
+    BufferHandle importBuffer(const std::string& name, const rhi::Buffer& buffer, const ImportDesc& desc = {});
+    // Last frame's final value of the transient texture called `name` (a pass creates
+    // it this frame). Read-only; holds nothing on the first frame and after resetHistory().
+    TextureHandle history(const std::string& name, const TextureInfo& info);
+    void markOutput(TextureHandle texture);
+    void markOutput(BufferHandle buffer);
+    void setOutputSize(rhi::Extent2D size);   // what relative sizes are relative to
+    rhi::Extent2D outputSize() const;
+    void resetHistory();                      // e.g. at a camera cut
+
+    // Compile now (execute compiles when needed). Throws hush::Error on an invalid graph.
+    void compile();
+    bool needsCompile() const;
+    // Record and submit one frame.
+    rhi::SubmissionId execute();
+    void waitIdle();
+
+    // After compile: the physical resources behind outputs (valid until the next
+    // compile) and the state a frame leaves them in, for reading them back.
+    const rhi::Texture& outputTexture(TextureHandle texture) const;
+    const rhi::Buffer& outputBuffer(BufferHandle buffer) const;
+    rhi::ResourceState outputState(TextureHandle texture) const;
+
+    // Introspection.
+    const GraphModel& model() const { return model_; }
+    const GraphTimings& timings() const { return timings_; }
+    MemoryReport memory() const;
+    uint32_t compileCount() const { return compileCount_; }
+    uint64_t frameCount() const { return frame_; }
+    std::vector<std::string> culledPasses() const;
+    std::vector<std::string> passOrder() const;
+    size_t barrierCount() const;   // barriers recorded per frame, excluding the one-time setup
+
+    // Graphviz DOT and JSON of the compiled graph: passes (culled ones grey),
+    // resources with format, extent, lifetime and memory offset, barriers, timings.
+    std::string dumpDot() const;
+    std::string dumpJson() const;
+    // Writes <pathWithoutExtension>.dot and .json (each through a temporary file).
+    void writeDump(const std::string& pathWithoutExtension) const;
+
+private:
+    friend class PassBuilder;
+    struct PassRuntime;
+    struct FrameSlot;
+
+    uint32_t addResource(ResourceDecl decl);
+    void markDirty() { dirty_ = true; }
+    void readFinishedTimings(FrameSlot& slot);
+    const CompiledGraph& compiled() const;
+
+    rhi::Device device_;
+    RenderGraphDesc desc_;
+    GraphModel model_;
+    std::vector<PassRuntime> passes_;
+    std::vector<rhi::Texture> importedTextures_;   // by resource index (empty when not imported)
+    std::vector<rhi::Buffer> importedBuffers_;
+    std::unique_ptr<CompiledGraph> compiled_;
+    std::vector<FrameSlot> slots_;
+    GraphTimings timings_;
+    bool dirty_ = true;
+    bool historyValid_ = false;
+    uint32_t compileCount_ = 0;
+    uint64_t frame_ = 0;
+    uint64_t compiledAtFrame_ = 0;   // parity of history ping-pong counts from here
+    uint64_t framesSinceHistoryReset_ = 0;
+};
+
+} // namespace hush::graph

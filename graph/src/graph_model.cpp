@@ -1,0 +1,58 @@
+#include <algorithm>
+#include <cmath>
+
+#include <hush/graph/graph_model.hpp>
+
+namespace hush::graph {
+
+rhi::Extent2D SizeSpec::resolve(rhi::Extent2D output) const {
+    if (mode == Mode::Absolute) return extent;
+    auto scaled = [&](uint32_t v) { return std::max<uint32_t>(1, uint32_t(std::lround(double(v) * scale))); };
+    return {scaled(output.width), scaled(output.height)};
+}
+
+bool isWrite(Access access) {
+    return access == Access::StorageWrite || access == Access::StorageReadWrite || access == Access::CopyDst;
+}
+
+bool isRead(Access access) { return access != Access::StorageWrite && access != Access::CopyDst; }
+
+rhi::ResourceState toState(Access access) {
+    using S = rhi::ResourceState;
+    switch (access) {
+    case Access::SampledRead: return S::SampledRead;
+    case Access::StorageRead: return S::StorageRead;
+    case Access::StorageWrite: return S::StorageWrite;
+    case Access::StorageReadWrite: return S::StorageReadWrite;
+    case Access::UniformRead: return S::UniformRead;
+    case Access::CopySrc: return S::CopySrc;
+    case Access::CopyDst: return S::CopyDst;
+    }
+    return S::General;
+}
+
+const char* toString(Access access) {
+    switch (access) {
+    case Access::SampledRead: return "sampled-read";
+    case Access::StorageRead: return "storage-read";
+    case Access::StorageWrite: return "storage-write";
+    case Access::StorageReadWrite: return "storage-read-write";
+    case Access::UniformRead: return "uniform-read";
+    case Access::CopySrc: return "copy-src";
+    case Access::CopyDst: return "copy-dst";
+    }
+    return "unknown";
+}
+
+uint32_t GraphModel::historySource(uint32_t historyResource) const {
+    if (historyResource >= resources.size()) return kNone;
+    const auto& h = resources[historyResource];
+    if (h.origin != ResourceOrigin::History) return kNone;
+    for (uint32_t i = 0; i < resources.size(); ++i) {
+        const auto& r = resources[i];
+        if (r.origin == ResourceOrigin::Transient && r.kind == ResourceKind::Texture && r.name == h.name) return i;
+    }
+    return kNone;
+}
+
+} // namespace hush::graph

@@ -256,6 +256,10 @@ CommandBuffer CommandEncoder::finish() {
         cb->keepAlive.swap(enc->keepAlive);   // swap, not move: both keep their capacity
         return CommandBuffer(cb);
     }
+    if (enc->external) {
+        enc->keepAlive.clear();   // the engine owns the submission and the lifetimes
+        return CommandBuffer();
+    }
     auto out = std::make_shared<CommandBufferImpl>();
     out->device = enc->device;
     out->label = enc->label;

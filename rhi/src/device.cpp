@@ -8,8 +8,6 @@
 namespace hush::rhi {
 namespace detail {
 
-bool hasExtendedStorageFormats(VkPhysicalDevice physical);
-
 DeviceImpl::~DeviceImpl() {
     if (device == VK_NULL_HANDLE) return;
     vk.vkDeviceWaitIdle(device);
@@ -143,6 +141,7 @@ std::shared_ptr<DeviceImpl> createDeviceImpl(const std::shared_ptr<InstanceImpl>
     impl->info = info;
     impl->queueFamily = record.computeQueueFamily;
     impl->label = desc.label;
+    impl->extendedStorageFormats = have.features.shaderStorageImageExtendedFormats == VK_TRUE;
     checkVk(vkCreateDevice(record.physicalDevice, &deviceInfo, nullptr, &impl->device),
             "vkCreateDevice on '" + info.name + "'");
     volkLoadDeviceTable(&impl->vk, impl->device);

@@ -59,6 +59,7 @@ struct DeviceImpl {
     VkPhysicalDeviceMemoryProperties memory{};
     VkPhysicalDeviceLimits limits{};
     uint64_t maxBufferSize = 0;
+    bool extendedStorageFormats = false;   // shaderStorageImageExtendedFormats is enabled
     std::string label;
 
     VkSemaphore timeline = VK_NULL_HANDLE;

@@ -76,7 +76,10 @@ private:
     void add(const spirv_cross::Resource& r, BindingKind kind) {
         BindGroupLayoutEntry entry;
         entry.kind = kind;
-        entry.name = r.name;
+        // For buffers SPIRV-Cross's resource name is the block's type name; the name a
+        // user writes in a bind group is the variable's (anonymous blocks keep the type's).
+        const std::string variable = compiler_.get_name(r.id);
+        entry.name = variable.empty() ? r.name : variable;
         entry.binding = compiler_.get_decoration(r.id, spv::DecorationBinding);
         const uint32_t set = compiler_.get_decoration(r.id, spv::DecorationDescriptorSet);
         const auto& type = compiler_.get_type(r.type_id);

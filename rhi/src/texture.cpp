@@ -9,7 +9,6 @@ namespace hush::rhi {
 namespace detail {
 
 bool formatSupports(VkPhysicalDevice physical, bool extendedStorageFormats, Format format, TextureUsage usage);
-bool hasExtendedStorageFormats(VkPhysicalDevice physical);
 
 TextureImpl::~TextureImpl() {
     if (defaultView != VK_NULL_HANDLE) device->vk.vkDestroyImageView(device->device, defaultView, nullptr);
@@ -60,8 +59,7 @@ void validateTextureDesc(const DeviceImpl& device, const TextureDesc& desc) {
     if (desc.mipLevelCount == 0 || desc.mipLevelCount > maxMips)
         fail(ErrorKind::InvalidArgument, what + " asks for " + std::to_string(desc.mipLevelCount) +
                                              " mip levels; its size allows 1 to " + std::to_string(maxMips));
-    if (!formatSupports(device.physicalDevice, hasExtendedStorageFormats(device.physicalDevice), desc.format,
-                        desc.usage))
+    if (!formatSupports(device.physicalDevice, device.extendedStorageFormats, desc.format, desc.usage))
         fail(ErrorKind::Unsupported, what + ": adapter '" + device.info.name + "' does not support format " +
                                          std::string(toString(desc.format)) + " with usage " + toString(desc.usage));
 }
@@ -124,7 +122,8 @@ Texture makeTexture(const std::shared_ptr<DeviceImpl>& devicePtr, const TextureD
     impl->blockOffset = offset;
     checkVk(device->vk.vkBindImageMemory(device->device, impl->image, memory, block ? offset : 0),
             "binding memory of " + what);
-    impl->defaultView = createImageView(*device, impl->image, desc.format, 0, desc.mipLevelCount, what);
+    if (hasAny(desc.usage, TextureUsage::TextureBinding | TextureUsage::StorageBinding))   // copy-only images have no views
+        impl->defaultView = createImageView(*device, impl->image, desc.format, 0, desc.mipLevelCount, what);
     return Texture(std::move(impl));
 }
 
@@ -184,6 +183,9 @@ uint64_t Texture::byteSize() const {
 
 TextureView Texture::defaultView() const {
     auto* impl = checked(impl_, "Texture");
+    if (impl->defaultView == VK_NULL_HANDLE)
+        fail(ErrorKind::InvalidArgument, "texture '" + impl->desc.label + "' has usage " + toString(impl->desc.usage) +
+                                             ": a view needs texture-binding or storage-binding");
     auto view = std::make_shared<TextureViewImpl>();
     view->texture = impl_;
     view->view = impl->defaultView;
@@ -195,6 +197,9 @@ TextureView Texture::defaultView() const {
 
 TextureView Texture::createView(uint32_t baseMipLevel, uint32_t mipLevelCount) const {
     auto* impl = checked(impl_, "Texture");
+    if (!hasAny(impl->desc.usage, TextureUsage::TextureBinding | TextureUsage::StorageBinding))
+        fail(ErrorKind::InvalidArgument, "texture '" + impl->desc.label + "' has usage " + toString(impl->desc.usage) +
+                                             ": a view needs texture-binding or storage-binding");
     if (mipLevelCount == 0 || baseMipLevel + mipLevelCount > impl->desc.mipLevelCount)
         fail(ErrorKind::InvalidArgument, "view of mips [" + std::to_string(baseMipLevel) + ", " +
                                              std::to_string(baseMipLevel + mipLevelCount) + ") of texture '" +

@@ -43,6 +43,7 @@ Device importVulkanDevice(const VulkanDeviceImport& desc) {
     impl->queueFamily = desc.queueFamilyIndex;
     impl->info = record.info;
     impl->label = desc.label;
+    impl->extendedStorageFormats = desc.shaderStorageImageExtendedFormats;
     volkLoadDeviceTable(&impl->vk, desc.device);
     readDeviceLimits(*impl);
     createTimeline(*impl);
@@ -58,7 +59,8 @@ Texture wrapVulkanImage(const Device& device, VkImage image, const TextureDesc& 
     impl->image = image;
     impl->desc = desc;
     impl->owned = false;
-    impl->defaultView = createImageView(*d, image, desc.format, 0, desc.mipLevelCount, "texture '" + desc.label + "'");
+    if (hasAny(desc.usage, TextureUsage::TextureBinding | TextureUsage::StorageBinding))
+        impl->defaultView = createImageView(*d, image, desc.format, 0, desc.mipLevelCount, "texture '" + desc.label + "'");
     return Texture(std::move(impl));
 }
 

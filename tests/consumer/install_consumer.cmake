@@ -23,17 +23,22 @@ endfunction()
 
 run_step("install into ${prefix}" "${CMAKE_COMMAND}" --install "${HUSH_BUILD_DIR}" --prefix "${prefix}")
 
-set(configure_args -S "${CONSUMER_SOURCE_DIR}" -B "${build}" -G Ninja
+# The consumer is built like hush itself: same generator (Ninja unless told),
+# compiler and build type.
+if(NOT CONSUMER_GENERATOR)
+  set(CONSUMER_GENERATOR Ninja)
+endif()
+set(configure_args -S "${CONSUMER_SOURCE_DIR}" -B "${build}" -G "${CONSUMER_GENERATOR}"
     "-DCMAKE_PREFIX_PATH=${prefix}" "-DHUSH_EXPECTED_PREFIX=${prefix}")
-foreach(pair IN ITEMS "CMAKE_BUILD_TYPE=CONSUMER_BUILD_TYPE" "CMAKE_CXX_COMPILER=CONSUMER_CXX_COMPILER"
-                      "CMAKE_MAKE_PROGRAM=CONSUMER_MAKE_PROGRAM")
-  string(REPLACE "=" ";" pair "${pair}")
-  list(GET pair 0 cache_var)
-  list(GET pair 1 script_var)
-  if(${script_var})
-    list(APPEND configure_args "-D${cache_var}=${${script_var}}")
-  endif()
-endforeach()
+if(CONSUMER_BUILD_TYPE)
+  list(APPEND configure_args "-DCMAKE_BUILD_TYPE=${CONSUMER_BUILD_TYPE}")
+endif()
+if(CONSUMER_CXX_COMPILER)
+  list(APPEND configure_args "-DCMAKE_CXX_COMPILER=${CONSUMER_CXX_COMPILER}")
+endif()
+if(CONSUMER_MAKE_PROGRAM)
+  list(APPEND configure_args "-DCMAKE_MAKE_PROGRAM=${CONSUMER_MAKE_PROGRAM}")
+endif()
 run_step("configure consumer" "${CMAKE_COMMAND}" ${configure_args})
 run_step("build consumer" "${CMAKE_COMMAND}" --build "${build}")
 run_step("run consumer" "${build}/hush_consumer")

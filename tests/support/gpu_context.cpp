@@ -1,5 +1,6 @@
 #include "support/gpu_context.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <mutex>
@@ -70,7 +71,6 @@ GpuContext& gpu() {
     return *ctx;
 }
 
-bool gpuCreated() { return context() != nullptr; }
 
 void releaseGpu() {
     auto& ctx = context();
@@ -108,6 +108,40 @@ std::vector<std::byte> readBufferMapped(const rhi::Buffer& buffer, uint64_t offs
         "read-back");
     std::vector<std::byte> out(size);
     staging.read(out);
+    return out;
+}
+
+namespace {
+rhi::Buffer recordStaging(rhi::CommandEncoder& encoder, uint64_t size) {
+    auto staging = gpu().device.createBuffer(
+        {.label = "readback", .size = size, .usage = rhi::BufferUsage::MapRead | rhi::BufferUsage::CopyDst});
+    encoder.bufferBarrier({{staging, rhi::ResourceState::Undefined, rhi::ResourceState::CopyDst}});
+    return staging;
+}
+} // namespace
+
+Readback Readback::ofBuffer(rhi::CommandEncoder& encoder, const rhi::Buffer& buffer, uint64_t offset, uint64_t size) {
+    Readback out;
+    out.size_ = size;
+    out.staging_ = recordStaging(encoder, size);
+    encoder.copyBufferToBuffer(buffer, offset, out.staging_, 0, size);
+    encoder.bufferBarrier({{out.staging_, rhi::ResourceState::CopyDst, rhi::ResourceState::HostRead}});
+    return out;
+}
+
+Readback Readback::ofTexture(rhi::CommandEncoder& encoder, const rhi::Texture& texture, uint32_t mipLevel) {
+    Readback out;
+    const uint32_t w = std::max(1u, texture.width() >> mipLevel), h = std::max(1u, texture.height() >> mipLevel);
+    out.size_ = uint64_t(w) * h * rhi::formatInfo(texture.format()).bytesPerPixel;
+    out.staging_ = recordStaging(encoder, out.size_);
+    encoder.copyTextureToBuffer({.texture = texture, .mipLevel = mipLevel}, {.buffer = out.staging_});
+    encoder.bufferBarrier({{out.staging_, rhi::ResourceState::CopyDst, rhi::ResourceState::HostRead}});
+    return out;
+}
+
+std::vector<std::byte> Readback::bytes() const {
+    std::vector<std::byte> out(size_);
+    staging_.read(out);
     return out;
 }
 

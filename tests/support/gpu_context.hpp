@@ -32,7 +32,6 @@ struct GpuContext {
 // The shared context; created on first call (the adapter honours HUSH_ADAPTER,
 // which CTest sets to llvmpipe).
 GpuContext& gpu();
-bool gpuCreated();
 // Drops the shared context; main() calls it before its final validation check, so
 // that messages from destroying the device are counted too.
 void releaseGpu();
@@ -99,9 +98,49 @@ template <class F> void submitAndWait(F&& record, const std::string& label = "te
     queue.wait(queue.submit(encoder.finish()));
 }
 
-// Reads `size` bytes of a buffer (which must be in CopySrc state's reach: the caller
-// has made its last GPU write visible to transfer reads) through a MapRead buffer.
+// Reads `size` bytes of a buffer in its own submission: barrier from `state` to
+// CopySrc, copy into a MapRead buffer, barrier back to `state`.
 std::vector<std::byte> readBufferMapped(const rhi::Buffer& buffer, uint64_t offset, uint64_t size,
                                         rhi::ResourceState state);
 
+// A read-back recorded into the caller's own command buffer, right after its work, so
+// that synchronization validation checks the caller's barriers against the copy (it
+// does not look across submissions that the host waited for). The source must already
+// be in CopySrc state. Read the result once the submission has completed.
+class Readback {
+public:
+    static Readback ofBuffer(rhi::CommandEncoder& encoder, const rhi::Buffer& buffer, uint64_t offset, uint64_t size);
+    static Readback ofTexture(rhi::CommandEncoder& encoder, const rhi::Texture& texture, uint32_t mipLevel = 0);
+
+    std::vector<std::byte> bytes() const;
+    template <class T> std::vector<T> values() const { return valuesOf<T>(bytes()); }
+
+private:
+    rhi::Buffer staging_;
+    uint64_t size_ = 0;
+};
+
+// Runs `f` and returns the hush::Error it throws, or nothing if it returns.
+template <class F> std::optional<hush::Error> errorFrom(F&& f) {
+    try {
+        f();
+    } catch (const hush::Error& e) {
+        return e;
+    }
+    return std::nullopt;
+}
+
 } // namespace hush::test
+
+namespace Catch {
+template <> struct StringMaker<hush::ErrorKind> {
+    static std::string convert(hush::ErrorKind kind) { return hush::toString(kind); }
+};
+template <> struct StringMaker<hush::rhi::BindGroupLayoutEntry> {
+    static std::string convert(const hush::rhi::BindGroupLayoutEntry& e) {
+        return "{binding " + std::to_string(e.binding) + ", " + hush::rhi::describe(e) + ", name '" + e.name +
+               "', format " + std::string(hush::rhi::toString(e.storageFormat)) + ", access " +
+               std::string(hush::rhi::toString(e.access)) + ", count " + std::to_string(e.count) + "}";
+    }
+};
+} // namespace Catch

@@ -68,6 +68,8 @@ struct BufferCopyLayout {
 
 class ComputePassEncoder {
 public:
+    // Binding a pipeline unbinds all bind groups and push constants: set them again
+    // (Vulkan would keep compatible ones; hush makes every dispatch say what it reads).
     void setPipeline(const ComputePipeline& pipeline);
     void setBindGroup(uint32_t index, const BindGroup& group);
     void setPushConstants(const void* data, uint32_t bytes, uint32_t offset = 0);
@@ -119,6 +121,7 @@ public:
     void copyBufferToTexture(const BufferCopyLayout& src, const TextureCopyRegion& dst, Extent2D size = {});
     void copyTextureToBuffer(const TextureCopyRegion& src, const BufferCopyLayout& dst, Extent2D size = {});
     void copyTextureToTexture(const TextureCopyRegion& src, const TextureCopyRegion& dst, Extent2D size = {});
+    // offset and size (kWholeSize: to the end) must be multiples of 4.
     void fillBuffer(const Buffer& buffer, uint32_t value, uint64_t offset = 0, uint64_t size = kWholeSize);
 
     void resetQuerySet(const QuerySet& set, uint32_t first, uint32_t count);

@@ -56,7 +56,9 @@ public:
     SubmissionId lastSubmitted() const;
 
     // Upload / read back through a staging buffer, waiting for completion. Meant for
-    // tests, tools and setup, not for per-frame work.
+    // tests, tools and setup, not for per-frame work. The buffer versions wait for all
+    // earlier work and make the data visible to all later work (treat the buffer as in
+    // state General afterwards); the texture versions move between the states given.
     void writeBuffer(const Buffer& buffer, uint64_t offset, std::span<const std::byte> data);
     std::vector<std::byte> readBuffer(const Buffer& buffer, uint64_t offset = 0, uint64_t size = kWholeSize);
     void writeTexture(const TextureWrite& write);

@@ -23,6 +23,9 @@ struct VulkanDeviceImport {
     // The engine's loader entry point; null means the loader hush opens itself.
     PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
     std::string label = "imported";
+    // Whether the engine enabled shaderStorageImageExtendedFormats: without it, hush
+    // refuses storage use of r8unorm, r16float, rg16float and rg32float textures.
+    bool shaderStorageImageExtendedFormats = false;
 };
 
 // A Device that uses, and never destroys, the engine's VkDevice and VkQueue.

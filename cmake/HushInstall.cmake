@@ -1,7 +1,7 @@
 # Install rules and the CMake package, so that an integrator's own project can do
 #
 #   find_package(hush CONFIG REQUIRED)
-#   target_link_libraries(app PRIVATE hush::rhi hush::shaders)
+#   target_link_libraries(app PRIVATE hush::graph hush::shaders)   # hush::graph brings hush::rhi
 #
 # Installed: the static libraries, their public headers, the `hush` CLI, and
 # <libdir>/cmake/hush/{hushConfig,hushConfigVersion,hushTargets}.cmake.
@@ -12,18 +12,16 @@ include(CMakePackageConfigHelpers)
 set(HUSH_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/hush"
     CACHE STRING "Where the hush CMake package files are installed, relative to the prefix")
 
-# Consumers see hush::rhi and hush::shaders, whatever the targets are called here.
-set_target_properties(hush_rhi PROPERTIES EXPORT_NAME rhi)
-set_target_properties(hush_shaders PROPERTIES EXPORT_NAME shaders)
-
-install(TARGETS hush_rhi hush_shaders
+# Consumers see hush::rhi, hush::graph and hush::shaders (each target sets its EXPORT_NAME).
+install(TARGETS hush_rhi hush_graph hush_shaders
   EXPORT hushTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
-  LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}"
-  INCLUDES DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+  LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+# (The include directory reaches consumers through each target's own
+# $<INSTALL_INTERFACE:include>, set in rhi/ and shaders/.)
 
 # Public headers keep their <hush/<layer>/...> paths.
-foreach(layer_include IN ITEMS rhi/include shaders/include)
+foreach(layer_include IN ITEMS rhi/include graph/include shaders/include)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${layer_include}/hush"
           DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
           FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")

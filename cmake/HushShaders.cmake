@@ -29,7 +29,7 @@ function(hush_add_shader_library target)
     set(header "${out_dir}/${name}.h")
     add_custom_command(
       OUTPUT "${header}"
-      COMMAND "${HUSH_GLSLANG}" -V --target-env vulkan1.2 -S comp ${include_flags}
+      COMMAND "${HUSH_GLSLANG}" --quiet -V --target-env vulkan1.2 -S comp ${include_flags}
               --vn ${var} --depfile "${header}.d" -o "${header}" "${abs}"
       DEPENDS "${abs}"
       DEPFILE "${header}.d"

@@ -147,7 +147,7 @@ void RenderGraph::compile() {
                 rhi::BindGroupDesc bg{.label = pass.name + ".set" + std::to_string(decl.set),
                                       .layout = decl.pipeline.getBindGroupLayout(decl.set), .entries = {}};
                 for (const auto& b : decl.bindings) {
-                    rhi::BindGroupEntry e{.name = b.name};
+                    rhi::BindGroupEntry e{.binding = b.binding, .name = b.name};
                     const uint32_t r = b.texture.valid() ? b.texture.index : b.buffer.valid() ? b.buffer.index : kNone;
                     if (r != kNone) {
                         bool declared = false;
@@ -155,7 +155,8 @@ void RenderGraph::compile() {
                         if (!declared || r >= n)
                             throw Error(ErrorKind::InvalidArgument,
                                         "pass '" + pass.name + "' binds '" + (r < n ? model_.resources[r].name : "?") +
-                                            "' to '" + b.name + "' but declares no read or write of it");
+                                            "' to '" + (b.name.empty() ? "binding " + std::to_string(b.binding) : b.name) +
+                                            "' but declares no read or write of it");
                     }
                     if (b.texture.valid()) e.texture = c->textures[r][parity];
                     else if (b.buffer.valid()) e.buffer = c->buffers[r];

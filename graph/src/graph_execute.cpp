@@ -103,13 +103,13 @@ const rhi::BindGroup& PassContext::bindGroup(BindGroupHandle handle) const {
 
 rhi::Extent2D PassContext::outputSize() const { return graph_.outputSize; }
 
-void PassContext::dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, const void* params,
-                           uint32_t paramBytes, uint32_t x, uint32_t y) {
+void PassContext::dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads,
+                           const void* params, uint32_t paramBytes) {
     auto pass = encoder_.beginComputePass();
     pass.setPipeline(pipeline);
     pass.setBindGroup(graph_.bindGroupSets[group.pass][group.index], bindGroup(group));
     if (paramBytes) pass.setPushConstants(params, paramBytes);
-    pass.dispatchThreads(x, y);
+    pass.dispatchThreads(threads.width, threads.height);
     pass.end();
 }
 

@@ -169,7 +169,8 @@ int run(const Options& options) {
     const AdapterInfo& info = adapter.info();
     std::printf("[bandwidth] adapter: %s (%s, %s)\n", info.name.c_str(), info.driverName.c_str(),
                 info.driverInfo.c_str());
-    std::printf("[bandwidth] %u warm-up + %u timed runs per case\n", options.warmup, options.runs);
+    std::printf("[bandwidth] %u warm-up + %u timed runs per case, validation %s\n", options.warmup, options.runs,
+                instance.validationEnabled() ? "on (slower: figures not representative)" : "off");
     Device device = adapter.createDevice({.label = "hush-bench-bandwidth"});
 
     std::vector<Row> rows;
@@ -204,6 +205,11 @@ int run(const Options& options) {
     std::printf("[bandwidth] wrote %s\n", options.output.c_str());
     if (!allVerified) {
         std::fprintf(stderr, "hush-bench-bandwidth: a copy did not reproduce its source; figures are suspect\n");
+        return 1;
+    }
+    // With HUSH_VALIDATION=1 the barriers above are checked too; a message means a bug here.
+    if (size_t messages = instance.validationMessageCount(); messages != 0) {
+        std::fprintf(stderr, "hush-bench-bandwidth: %zu validation message(s)\n", messages);
         return 1;
     }
     return 0;

@@ -119,20 +119,26 @@ int runInfo(std::span<const std::string_view> args) {
     SelfCheckResult check = runSelfCheck(device);
     device.waitIdle();
 
-    std::printf("    saxpy, %u floats          max relative error %.3g\n", check.width * check.height,
-                check.bufferMaxError);
-    std::printf("    rgba32f image, %ux%u      max relative error %.3g\n", check.width, check.height,
-                check.imageMaxError);
-    std::printf("    tolerance                  %.3g\n", check.tolerance);
+    auto line = [](const std::string& key, const std::string& value) {
+        std::printf("    %-28s %s\n", key.c_str(), value.c_str());
+    };
+    char text[96];
+    std::snprintf(text, sizeof text, "max relative error %.3g", check.bufferMaxError);
+    line("saxpy, " + std::to_string(check.width * check.height) + " floats", text);
+    std::snprintf(text, sizeof text, "max relative error %.3g", check.imageMaxError);
+    line("rgba32f image, " + std::to_string(check.width) + "x" + std::to_string(check.height), text);
+    std::snprintf(text, sizeof text, "%.3g", check.tolerance);
+    line("tolerance", text);
     if (check.gpuMs) {
-        std::printf("    GPU time                   %.4f ms (timestamps)\n", *check.gpuMs);
+        std::snprintf(text, sizeof text, "%.4f ms (timestamps)", *check.gpuMs);
+        line("GPU time", text);
     } else {
-        std::printf("    GPU time                   n/a (the adapter has no compute timestamps)\n");
+        line("GPU time", "n/a (the adapter has no compute timestamps)");
     }
     bool passed = check.passed();
     if (instance.validationEnabled()) {
         size_t messages = instance.validationMessageCount();
-        std::printf("    validation messages        %zu\n", messages);
+        line("validation messages", std::to_string(messages));
         passed = passed && messages == 0;
     }
     std::printf("%s\n", passed ? "PASS" : "FAIL");

@@ -3,7 +3,7 @@
 // Bandwidth probe: one imageLoad and one imageStore per texel of an RGBA16F
 // storage texture (8 bytes read + 8 written). No arithmetic, so the time is the
 // memory system's. Used by samples/bench/bandwidth.cpp.
-#include "../common/grid.glsl"
+#include "common/grid.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -6,7 +6,7 @@
 //   y[i]  = a * x[i] + y[i]                    for i < n   (saxpy)
 //   image = (rgb * a + (px, py, 1), alpha^2)   per pixel
 // Keep the CPU reference in samples/cli/selfcheck.cpp in step with this file.
-#include "../common/grid.glsl"
+#include "common/grid.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

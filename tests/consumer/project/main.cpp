@@ -1,9 +1,11 @@
 // An integrator's smallest useful program: open Vulkan through hush, run one
-// embedded compute shader (bench/copy_buffer) and check what it wrote.
+// embedded compute shader (bench/copy_buffer) as a one-pass render graph over the
+// application's buffers, and check what it wrote.
 #include <cstdio>
 #include <cstring>
 #include <vector>
 
+#include <hush/graph/render_graph.hpp>
 #include <hush/rhi/rhi.hpp>
 #include <hush/shaders/shaders.hpp>
 
@@ -32,22 +34,19 @@ int main() {
         ShaderModule module = device.createShaderModule(
             {.label = "bench/copy_buffer", .code = hush::shaders::find("bench/copy_buffer")});
         ComputePipeline pipeline = device.createComputePipeline({.label = "copy", .module = module});
-        BindGroup group = device.createBindGroup({.label = "copy",
-                                                  .layout = pipeline.getBindGroupLayout(0),
-                                                  .entries = {{.binding = 0, .buffer = src},
-                                                              {.binding = 1, .buffer = dst}}});
-
-        CommandEncoder encoder = device.createCommandEncoder();
-        encoder.bufferBarrier({{src, ResourceState::CopyDst, ResourceState::StorageRead},
-                               {dst, ResourceState::Undefined, ResourceState::StorageWrite}});
-        ComputePassEncoder pass = encoder.beginComputePass({.label = "copy"});
-        pass.setPipeline(pipeline);
-        pass.setBindGroup(0, group);
-        pass.setParams(count);
-        pass.dispatchThreads(count);
-        pass.end();
-        encoder.bufferBarrier({{dst, ResourceState::StorageWrite, ResourceState::CopySrc}});
-        queue.wait(queue.submit(encoder.finish()));
+        hush::graph::RenderGraph graph(device, {.label = "consumer"});
+        auto in = graph.importBuffer("src", src, {.initialState = ResourceState::General,
+                                                  .finalState = ResourceState::StorageRead});
+        auto out = graph.importBuffer("dst", dst, {.initialState = ResourceState::Undefined,
+                                                   .finalState = ResourceState::CopySrc});
+        graph.addPass("copy", [&](hush::graph::PassBuilder& b) {
+            auto read = b.read("src", in);
+            auto written = b.write("dst", out);
+            auto group = b.bindGroup(pipeline, 0, {{.binding = 0, .buffer = read}, {.binding = 1, .buffer = written}});
+            return [=](hush::graph::PassContext& ctx) { ctx.dispatch(pipeline, group, {count, 1}, count); };
+        });
+        graph.execute();
+        graph.waitIdle();
 
         std::vector<std::byte> raw = queue.readBuffer(dst);
         std::vector<float> output(raw.size() / sizeof(float));

@@ -8,6 +8,7 @@
 
 #include <hush/graph/graph_model.hpp>
 #include <hush/graph/handles.hpp>
+#include <hush/rhi/bind_group.hpp>
 #include <hush/rhi/buffer.hpp>
 #include <hush/rhi/pipeline.hpp>
 #include <hush/rhi/texture.hpp>
@@ -24,9 +25,11 @@ struct InputSpec {
 };
 
 // One entry of a declared bind group: a graph resource, or a fixed RHI object
-// (a uniform buffer of parameters, a sampler). `name` is the shader variable.
+// (a uniform buffer of parameters, a sampler). `name` is the shader variable (for
+// an anonymous block, its type name); or give the binding number instead.
 struct GraphBinding {
     std::string name;
+    uint32_t binding = rhi::kBindingByName;
     TextureHandle texture;
     BufferHandle buffer;
     rhi::Buffer fixedBuffer;

@@ -22,17 +22,14 @@ public:
     rhi::Extent2D outputSize() const;
     uint64_t frameIndex() const { return frame_; }
 
-    // The common case: one dispatch of `pipeline` with one bind group (set 0),
-    // optional push constants, covering `x` by `y` threads.
-    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, const void* params,
-                  uint32_t paramBytes, uint32_t x, uint32_t y = 1);
+    // The common case: one dispatch of `pipeline` with one bind group (at the set it
+    // was declared for) covering threads.width x threads.height invocations, with
+    // optional push constants last: dispatch(pipe, group, {w, h}, params).
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads,
+                  const void* params = nullptr, uint32_t paramBytes = 0);
     template <class P>
-    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, const P& params, uint32_t x,
-                  uint32_t y = 1) {
-        dispatch(pipeline, group, &params, uint32_t(sizeof(P)), x, y);
-    }
-    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, uint32_t x, uint32_t y = 1) {
-        dispatch(pipeline, group, nullptr, 0, x, y);
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads, const P& params) {
+        dispatch(pipeline, group, threads, &params, uint32_t(sizeof(P)));
     }
 
     PassContext(const CompiledGraph& graph, rhi::CommandEncoder& encoder, uint32_t parity, bool historyValid,

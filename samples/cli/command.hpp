@@ -29,6 +29,10 @@ const Command& infoCommand();
 bool takeOption(std::span<const std::string_view> args, size_t& i, std::string_view name,
                 std::string& value);
 
+// Writes `text` to `path` through a temporary file and a rename, so a failed run
+// never leaves a half-written file over a user's; throws hush::Error naming the path.
+void writeTextFile(const std::string& path, const std::string& text);
+
 // hush::Error (InvalidArgument) for an argument a subcommand does not know.
 [[noreturn]] void unknownArgument(std::string_view command, std::string_view arg);
 

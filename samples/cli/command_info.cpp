@@ -8,6 +8,7 @@
 #include <hush/rhi/rhi.hpp>
 
 #include "command.hpp"
+#include "graph_selfcheck.hpp"
 #include "selfcheck.hpp"
 
 namespace hush::cli {
@@ -16,18 +17,22 @@ namespace {
 using namespace hush::rhi;
 
 constexpr std::string_view kUsage =
-    "usage: hush info [--adapter <text>] [--validation]\n"
+    "usage: hush info [--adapter <text>] [--validation] [--dump-graph <path>]\n"
     "\n"
     "Lists every Vulkan adapter with its type, driver, API version and limits, picks\n"
     "the default adapter, and runs a compute self-check on it (a saxpy on storage\n"
     "buffers and an RGBA32F storage-image kernel, compared with the CPU). Prints\n"
-    "PASS or FAIL with the maximum error and the GPU time.\n"
+    "PASS or FAIL with the maximum error and the GPU time. Then runs a render-graph\n"
+    "self-check: five passes over three frames (one pass culled, one reading a\n"
+    "history), compared with the CPU.\n"
     "\n"
     "options:\n"
     "  --adapter <text>  use the first adapter whose name contains <text>\n"
     "                    (default: HUSH_ADAPTER, else discrete, integrated, any, CPU)\n"
     "  --validation      enable the Vulkan validation layer (default: HUSH_VALIDATION=1);\n"
     "                    any validation message makes the self-check fail\n"
+    "  --dump-graph <path>  write the self-check's compiled graph to <path>.dot\n"
+    "                    (Graphviz) and <path>.json\n"
     "\n"
     "exit status: 0 PASS, 1 FAIL, 2 could not run (no Vulkan, no adapter, ...)\n";
 
@@ -74,11 +79,14 @@ void printAdapter(const Adapter& adapter, bool isSelected) {
 int runInfo(std::span<const std::string_view> args) {
     InstanceDesc instanceDesc;
     AdapterRequest request;
+    std::string dumpPath;
     for (size_t i = 0; i < args.size(); ++i) {
         std::string value;
         if (takeOption(args, i, "--adapter", value)) {
             request.nameContains = value;
             request.nameFromEnvironment = false;
+        } else if (takeOption(args, i, "--dump-graph", value)) {
+            dumpPath = value;
         } else if (args[i] == "--validation") {
             instanceDesc.validation = true;
             instanceDesc.validationFromEnvironment = false;
@@ -136,6 +144,26 @@ int runInfo(std::span<const std::string_view> args) {
         line("GPU time", "n/a (the adapter has no compute timestamps)");
     }
     bool passed = check.passed();
+
+    std::printf("render-graph self-check\n");
+    std::fflush(stdout);
+    const GraphSelfCheckResult graphCheck = runGraphSelfCheck(device);
+    std::snprintf(text, sizeof text, "max abs error %.3g (tolerance %.3g)", graphCheck.maxError, graphCheck.tolerance);
+    line(std::to_string(graphCheck.frames) + " frames with history", text);
+    std::string culled;
+    for (const auto& name : graphCheck.culled) culled += (culled.empty() ? "" : ", ") + name;
+    line("culled", culled.empty() ? "none" : culled);
+    line("compiles", std::to_string(graphCheck.compiles));
+    if (graphCheck.timed) {
+        std::snprintf(text, sizeof text, "%.4f ms (last frame, timestamps)", graphCheck.totalGpuMs);
+        line("GPU time", text);
+    }
+    if (!dumpPath.empty()) {
+        writeTextFile(dumpPath + ".dot", graphCheck.dot);
+        writeTextFile(dumpPath + ".json", graphCheck.json);
+        line("graph written to", dumpPath + ".dot, " + dumpPath + ".json");
+    }
+    passed = passed && graphCheck.passed();
     if (instance.validationEnabled()) {
         size_t messages = instance.validationMessageCount();
         line("validation messages", std::to_string(messages));

@@ -1,0 +1,208 @@
+// Renderer: one World per frame time, rows shared out to threads through an atomic
+// counter, every pixel's estimates written into the frame's channels.
+#include <hush/tracer/renderer.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <thread>
+
+#include <embree3/rtcore.h>
+
+#include <hush/rhi/error.hpp>
+
+#include "camera_model.hpp"
+#include "path_integrator.hpp"
+#include "world.hpp"
+
+namespace hush::tracer {
+
+using namespace detail;
+
+struct Renderer::Impl {
+    Scene scene;
+    RTCDevice device = nullptr;
+    mutable std::atomic<uint64_t> rays{0};
+    ~Impl() {
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+Renderer::Renderer(Scene scene) : impl_(std::make_unique<Impl>()) {
+    scene.validate();
+    impl_->scene = std::move(scene);
+    impl_->device = rtcNewDevice(nullptr);
+    if (!impl_->device)
+        throw Error(ErrorKind::Unsupported, "Embree could not create a device (error " +
+                                                std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+}
+
+Renderer::~Renderer() = default;
+
+const Scene& Renderer::scene() const { return impl_->scene; }
+float Renderer::frameTime(uint32_t frameIndex) const { return float(frameIndex) / impl_->scene.framesPerSecond; }
+uint64_t Renderer::raysTraced() const { return impl_->rays.load(); }
+
+namespace {
+
+void checkSettings(const RenderSettings& s) {
+    if (s.width == 0 || s.height == 0 || s.width > 16384 || s.height > 16384)
+        throw Error(ErrorKind::InvalidArgument, "render size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                                    " must be between 1x1 and 16384x16384");
+    if (s.channels.empty()) throw Error(ErrorKind::InvalidArgument, "no channels to render");
+    if (s.bounces > 64) throw Error(ErrorKind::InvalidArgument, "bounces must be at most 64");
+}
+
+glm::vec3 finiteOrZero(glm::vec3 v) {
+    return (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) ? v : glm::vec3(0.0f);
+}
+
+void put(Frame& frame, Channel c, uint32_t x, uint32_t y, glm::vec3 v) {
+    auto it = frame.channels.find(c);
+    if (it == frame.channels.end()) return;
+    float* p = it->second.at(x, y);
+    for (uint32_t i = 0; i < it->second.channels; ++i) p[i] = v[int(i)];
+}
+
+} // namespace
+
+Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, const ProgressFn& progress) const {
+    checkSettings(settings);
+    const Scene& scene = impl_->scene;
+    const float time = frameTime(frameIndex), previousTime = frameTime(frameIndex ? frameIndex - 1 : 0);
+    const World world(impl_->device, scene, time);
+    const glm::vec2 jitter = settings.jitter ? frameJitter(frameIndex) : glm::vec2(0.0f);
+    const glm::vec2 previousJitter = settings.jitter ? frameJitter(frameIndex ? frameIndex - 1 : 0) : glm::vec2(0.0f);
+    const auto& path = scene.camera;
+    const CameraModel camera = makeCamera(path.at(time), settings.width, settings.height, path.nearPlane, path.farPlane, jitter);
+    const CameraModel previous =
+        makeCamera(path.at(previousTime), settings.width, settings.height, path.nearPlane, path.farPlane, previousJitter);
+
+    Frame frame;
+    frame.width = settings.width;
+    frame.height = settings.height;
+    frame.index = frameIndex;
+    frame.scene = scene.name;
+    frame.camera = camera.info;
+    frame.previousCamera = previous.info;
+    for (Channel c : settings.channels) frame.add(c);
+    const auto wants = [&](Channel c) { return frame.has(c); };
+    const bool mara = wants(Channel::Matte) || wants(Channel::Glossy);
+    const bool path1 = wants(Channel::Color) || wants(Channel::Indirect) || (wants(Channel::Direct) && !mara);
+    const bool reference = wants(Channel::Reference);
+    if (reference) frame.referenceSpp = std::max(1u, settings.referenceSpp);
+    const PathOptions options{settings.bounces, settings.regularization, settings.maraDirectSamples};
+
+    std::vector<glm::mat4> previousToWorld(scene.meshes.size()), inverseCurrent(scene.meshes.size());
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        previousToWorld[m] = scene.meshes[m].transformAt(previousTime);
+        inverseCurrent[m] = glm::inverse(world.transform(uint32_t(m)));
+    }
+
+    // Rays are counted per row: primary, shadow and bounce rays of the estimators.
+    const uint64_t raysPerPath = 2ull * (options.bounces + 1);
+    const uint64_t unitsPerRow = uint64_t(settings.width) * (1 + (reference ? frame.referenceSpp : 0));
+    const uint64_t totalUnits = unitsPerRow * settings.height;
+    std::atomic<uint32_t> nextRow{0};
+    std::atomic<uint64_t> doneUnits{0};
+    std::mutex progressMutex;
+
+    auto renderRow = [&](uint32_t y) {
+        for (uint32_t x = 0; x < settings.width; ++x) {
+            const glm::vec2 pixel(float(x) + 0.5f + jitter.x, float(y) + 0.5f + jitter.y);
+            const glm::vec3 dir = camera.rayDirection(pixel);
+            const Hit hit = world.intersect(camera.position, dir);
+            if (hit.valid) {
+                const Material& m = *hit.material;
+                put(frame, Channel::Albedo, x, y, m.albedo);
+                put(frame, Channel::Specular, x, y, m.specular);
+                put(frame, Channel::Normal, x, y, hit.shadingNormal);
+                put(frame, Channel::Position, x, y, hit.position);
+                put(frame, Channel::Depth, x, y, glm::vec3(camera.viewDepth(hit.position)));
+                put(frame, Channel::Roughness, x, y, glm::vec3(m.roughness));
+                put(frame, Channel::MeshId, x, y, glm::vec3(float(hit.mesh)));
+            } else {
+                put(frame, Channel::Depth, x, y, glm::vec3(path.farPlane));
+                put(frame, Channel::Position, x, y, camera.position + dir * path.farPlane);
+                put(frame, Channel::MeshId, x, y, glm::vec3(kNoMesh));
+            }
+            if (wants(Channel::Motion)) {
+                // Where this surface point (or, for the sky, this direction) was last frame.
+                glm::vec2 now, before;
+                glm::vec3 point = hit.valid ? hit.position : camera.position + dir * path.farPlane;
+                glm::vec3 pointBefore = point;
+                if (hit.valid)
+                    pointBefore = glm::vec3(previousToWorld[hit.mesh] * inverseCurrent[hit.mesh] * glm::vec4(point, 1.0f));
+                else
+                    pointBefore = previous.position + dir * path.farPlane;
+                glm::vec3 motion(0.0f);
+                if (camera.project(point, now) && previous.project(pointBefore, before)) motion = glm::vec3(before - now, 0.0f);
+                put(frame, Channel::Motion, x, y, motion);
+            }
+            if (wants(Channel::VirtualPos)) {
+                // The reflected image of the scene lies beyond the surface by the mirror ray's length.
+                glm::vec3 virtualPos = camera.position + dir * path.farPlane;
+                if (hit.valid) {
+                    const glm::vec3 r = glm::reflect(dir, hit.shadingNormal);
+                    const Hit mirror = world.intersect(offsetRay(hit, r), r);
+                    virtualPos = hit.position + dir * (mirror.valid ? mirror.t : path.farPlane);
+                }
+                put(frame, Channel::VirtualPos, x, y, virtualPos);
+            }
+            if (path1) {
+                PixelSampler sampler(settings.seed, x, y, frameIndex);
+                const PathEstimate e = estimatePath(world, dir, hit, sampler, options);
+                const glm::vec3 direct = finiteOrZero(e.direct), indirect = finiteOrZero(e.indirect);
+                put(frame, Channel::Color, x, y, direct + indirect);
+                put(frame, Channel::Indirect, x, y, indirect);
+                if (!mara) put(frame, Channel::Direct, x, y, direct);
+            }
+            if (mara) {
+                PixelSampler sampler(settings.seed ^ 0x6d617261u, x, y, frameIndex);
+                const MaraEstimate e = estimateMara(world, dir, hit, sampler, options);
+                put(frame, Channel::Direct, x, y, finiteOrZero(e.direct));
+                put(frame, Channel::Matte, x, y, finiteOrZero(e.matte));
+                put(frame, Channel::Glossy, x, y, finiteOrZero(e.glossy));
+            }
+            if (reference) {
+                // Independent of the noisy frames' samples (another key), same estimator.
+                glm::dvec3 sum(0.0);
+                for (uint32_t s = 0; s < frame.referenceSpp; ++s) {
+                    PixelSampler sampler(settings.seed ^ 0x72656665u, x, y, uint64_t(frameIndex) * frame.referenceSpp + s);
+                    const PathEstimate e = estimatePath(world, dir, hit, sampler, options);
+                    sum += glm::dvec3(finiteOrZero(e.direct + e.indirect));
+                }
+                put(frame, Channel::Reference, x, y, glm::vec3(sum / double(frame.referenceSpp)));
+            }
+        }
+        const uint64_t paths = uint64_t(settings.width) * ((path1 ? 1 : 0) + (mara ? 3 : 0) +
+                                                           (reference ? frame.referenceSpp : 0));
+        impl_->rays += uint64_t(settings.width) + paths * raysPerPath;
+        const uint64_t done = doneUnits += unitsPerRow;
+        if (progress) {
+            std::lock_guard lock(progressMutex);
+            progress(done, totalUnits);
+        }
+    };
+
+    const uint32_t threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::thread> pool;
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    for (uint32_t t = 0; t < threads; ++t)
+        pool.emplace_back([&] {
+            try {
+                for (uint32_t y = nextRow++; y < settings.height; y = nextRow++) renderRow(y);
+            } catch (...) {
+                std::lock_guard lock(failureMutex);
+                if (!failure) failure = std::current_exception();
+                nextRow = settings.height;   // stop the others
+            }
+        });
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    return frame;
+}
+
+} // namespace hush::tracer

@@ -50,7 +50,8 @@ Stats meanColor(const Renderer& renderer, uint32_t bounces, uint32_t frames, int
     double sum = 0.0, squares = 0.0;
     size_t n = 0;
     for (uint32_t f = 0; f < frames; ++f) {
-        const Image& color = renderer.render(f, settings).get(Channel::Color);
+        const Frame frame = renderer.render(f, settings);   // keep it: get() returns a reference into it
+        const Image& color = frame.get(Channel::Color);
         for (size_t i = size_t(component); i < color.pixels.size(); i += 3) {
             sum += color.pixels[i];
             squares += double(color.pixels[i]) * color.pixels[i];

@@ -7,25 +7,6 @@
 #include <hush/rhi/instance.hpp>
 #include <hush/rhi/resource_state.hpp>
 
-namespace hush {
-
-const char* toString(ErrorKind kind) {
-    switch (kind) {
-    case ErrorKind::NoVulkanLoader: return "no-vulkan-loader";
-    case ErrorKind::NoDriver: return "no-driver";
-    case ErrorKind::NoAdapter: return "no-adapter";
-    case ErrorKind::Unsupported: return "unsupported";
-    case ErrorKind::InvalidArgument: return "invalid-argument";
-    case ErrorKind::BindingMismatch: return "binding-mismatch";
-    case ErrorKind::OutOfMemory: return "out-of-memory";
-    case ErrorKind::DeviceLost: return "device-lost";
-    case ErrorKind::Vulkan: return "vulkan";
-    case ErrorKind::NotFound: return "not-found";
-    }
-    return "unknown";
-}
-
-} // namespace hush
 
 namespace hush::rhi {
 

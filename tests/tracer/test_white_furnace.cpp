@@ -21,6 +21,7 @@ Scene furnace(glm::vec3 albedo, glm::vec3 emission, glm::vec3 specular = glm::ve
     m.specular = specular;
     m.roughness = roughness;
     m.emission = emission;
+    m.doubleSidedEmission = true;   // the box's faces wind outwards; they must light the inside
     s.materials = {m};
     Mesh box;
     box.name = "box";

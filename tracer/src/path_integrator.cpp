@@ -15,7 +15,12 @@ float powerHeuristic(float a, float b) {
     return a + b > 0.0f ? a / (a + b) : 0.0f;
 }
 
-bool emits(const Hit& hit) { return glm::any(glm::greaterThan(hit.material->emission, glm::vec3(0.0f))); }
+// Emission seen along the ray that found `hit`: area lights emit from their front
+// face (counter-clockwise winding) unless the material emits from both sides.
+glm::vec3 emitted(const Hit& hit) {
+    return hit.frontFace || hit.material->doubleSidedEmission ? hit.material->emission : glm::vec3(0.0f);
+}
+bool emits(const Hit& hit) { return glm::any(glm::greaterThan(emitted(hit), glm::vec3(0.0f))); }
 
 LayeredBrdf brdfAt(const Hit& hit, uint32_t depth, float regularization) {
     Material m = *hit.material;
@@ -38,8 +43,13 @@ glm::vec3 sampleDirect(const World& world, const Hit& x, const Basis& basis, con
     if (wi.z <= 0.0f || glm::dot(light.direction, x.geometricNormal) <= 0.0f) return glm::vec3(0.0f);
     const glm::vec3 f = brdf.eval(wo, wi);
     if (!glm::any(glm::greaterThan(f, glm::vec3(0.0f)))) return glm::vec3(0.0f);
-    const float tMax = std::isinf(light.distance) ? 1e30f : light.distance * (1.0f - 1e-4f);
-    if (world.occluded(offsetRay(x, light.direction), light.direction, tMax)) return glm::vec3(0.0f);
+    // The shadow ray starts off the surface, so its length is measured from there to
+    // the light point, stopping just short of the light's own surface.
+    const glm::vec3 origin = offsetRay(x, light.direction);
+    const float tMax = std::isinf(light.distance)
+                           ? 1e30f
+                           : glm::length(x.position + light.direction * light.distance - origin) * (1.0f - 1e-4f);
+    if (world.occluded(origin, light.direction, tMax)) return glm::vec3(0.0f);
     const float weight = mis ? powerHeuristic(light.pdf, brdf.pdf(wo, wi)) : 1.0f;
     return f * light.radiance * (weight / light.pdf);
 }
@@ -77,7 +87,7 @@ void continuePath(const World& world, Hit x, glm::vec3 rayDir, uint32_t depth, P
         }
         if (emits(next)) {
             const float weight = bs.delta ? 1.0f : powerHeuristic(bs.pdf, world.emitterPdf(x.position, next));
-            target += throughput * next.material->emission * weight;
+            target += throughput * emitted(next) * weight;
         }
         if (last) return;
         x = next;
@@ -93,7 +103,7 @@ glm::vec3 incidentRadiance(const World& world, const Hit& x, glm::vec3 wi, Pixel
     if (!next.valid) return world.skyRadiance(wi) + (withLights ? world.sunRadiance(wi) : glm::vec3(0.0f));
     PathEstimate rest;
     if (options.bounces > 0) continuePath(world, next, wi, 1, sampler, options, glm::vec3(1.0f), rest);
-    return rest.indirect + (withLights ? next.material->emission : glm::vec3(0.0f));
+    return rest.indirect + (withLights ? emitted(next) : glm::vec3(0.0f));
 }
 
 } // namespace
@@ -111,7 +121,7 @@ PathEstimate estimatePath(const World& world, glm::vec3 direction, const Hit& pr
         out.direct = world.skyRadiance(direction) + world.sunRadiance(direction);
         return out;
     }
-    out.direct = primary.material->emission;
+    out.direct = emitted(primary);
     continuePath(world, primary, direction, 0, sampler, options, glm::vec3(1.0f), out);
     return out;
 }
@@ -123,7 +133,7 @@ MaraEstimate estimateMara(const World& world, glm::vec3 direction, const Hit& pr
         out.direct = world.skyRadiance(direction) + world.sunRadiance(direction);
         return out;
     }
-    out.direct = primary.material->emission;
+    out.direct = emitted(primary);
     const Basis basis(primary.shadingNormal);
     const glm::vec3 wo = basis.toLocal(-direction);
     if (wo.z <= 0.0f) return out;

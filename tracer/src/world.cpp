@@ -20,6 +20,7 @@ World::World(RTCDevice device, const Scene& scene, float time) : scene_(scene), 
     rtcSetSceneFlags(rtc_, RTC_SCENE_FLAG_ROBUST);
     transforms_.resize(scene.meshes.size());
     worldNormals_.resize(scene.meshes.size());
+    worldPositions_.resize(scene.meshes.size());
     emitterIndex_.resize(scene.meshes.size());
     for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
@@ -46,6 +47,7 @@ World::World(RTCDevice device, const Scene& scene, float time) : scene_(scene), 
             indices[3 * i + 1] = mesh.triangles[i].y;
             indices[3 * i + 2] = mesh.triangles[i].z;
         }
+        worldPositions_[m] = world;
         rtcCommitGeometry(geometry);
         rtcAttachGeometryByID(rtc_, geometry, m);   // geometry ID = mesh index
         rtcReleaseGeometry(geometry);
@@ -70,6 +72,7 @@ World::World(RTCDevice device, const Scene& scene, float time) : scene_(scene), 
                 if (!(e.area > 0.0f)) continue;   // degenerate triangles emit nothing
                 e.normal = n / (2.0f * e.area);
                 e.radiance = material.emission;
+                e.doubleSided = material.doubleSidedEmission;
                 index[i] = uint32_t(emitters_.size());
                 emitters_.push_back(e);
             }
@@ -130,8 +133,16 @@ Hit World::intersect(glm::vec3 origin, glm::vec3 direction, float tMax) const {
     hit.position = origin + direction * hit.t;
     const Mesh& mesh = scene_.meshes[hit.mesh];
     hit.material = &scene_.materials[mesh.material];
-    glm::vec3 ng = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
-    if (glm::dot(ng, direction) > 0.0f) ng = -ng;   // surfaces are two-sided
+    // The counter-clockwise face normal from our own vertices (not Embree's Ng, whose
+    // orientation convention is Embree's), then turned to face the ray: surfaces
+    // reflect on both sides, only emission cares which side was hit.
+    const auto& tri = mesh.triangles[hit.triangle];
+    const auto& wp = worldPositions_[hit.mesh];
+    glm::vec3 ng = glm::cross(wp[tri.y] - wp[tri.x], wp[tri.z] - wp[tri.x]);
+    const float ngLength = glm::length(ng);
+    ng = ngLength > 0.0f ? ng / ngLength : glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+    hit.frontFace = glm::dot(ng, direction) < 0.0f;
+    if (!hit.frontFace) ng = -ng;
     hit.geometricNormal = ng;
     hit.shadingNormal = ng;
     const auto& normals = worldNormals_[hit.mesh];
@@ -188,7 +199,7 @@ LightSample World::sampleLight(glm::vec3 from, float choice, glm::vec2 u) const 
     if (!(d2 > 0.0f)) return s;
     s.distance = std::sqrt(d2);
     s.direction = toLight / s.distance;
-    const float cosLight = std::abs(glm::dot(e.normal, s.direction));   // two-sided emitters
+    const float cosLight = emittingCosine(e, -s.direction);
     if (cosLight < 1e-6f) return s;
     const float choose = (1.0f - sunProbability_) * (emitterCdf_[i] - (i ? emitterCdf_[i - 1] : 0.0f));
     s.pdf = choose * d2 / (cosLight * e.area);
@@ -204,10 +215,15 @@ float World::emitterPdf(glm::vec3 from, const Hit& hit) const {
     const Emitter& e = emitters_[i];
     const glm::vec3 d = hit.position - from;
     const float d2 = glm::dot(d, d);
-    const float cosLight = std::abs(glm::dot(e.normal, glm::normalize(d)));
+    const float cosLight = emittingCosine(e, -glm::normalize(d));
     if (cosLight < 1e-6f) return 0.0f;
     const float choose = (1.0f - sunProbability_) * (emitterCdf_[i] - (i ? emitterCdf_[i - 1] : 0.0f));
     return choose * d2 / (cosLight * e.area);
+}
+
+float World::emittingCosine(const Emitter& e, glm::vec3 fromLightTowards) {
+    const float c = glm::dot(e.normal, fromLightTowards);
+    return e.doubleSided ? std::abs(c) : std::max(c, 0.0f);
 }
 
 glm::vec3 World::skyRadiance(glm::vec3 direction) const {

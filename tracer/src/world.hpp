@@ -17,6 +17,7 @@ struct Hit {
     glm::vec3 position{0.0f};
     glm::vec3 geometricNormal{0.0f};   // unit, facing the incoming ray
     glm::vec3 shadingNormal{0.0f};     // unit, on the same side as geometricNormal
+    bool frontFace = true;             // the ray arrived on the counter-clockwise side
     uint32_t mesh = ~0u;
     uint32_t triangle = 0;
     const Material* material = nullptr;
@@ -54,15 +55,20 @@ public:
 
 private:
     struct Emitter {
-        glm::vec3 v0, e1, e2, normal;
+        glm::vec3 v0, e1, e2, normal;   // normal: the front face's (counter-clockwise)
         float area;
         glm::vec3 radiance;
+        bool doubleSided;
     };
+    // The cosine between an emitter's emitting side and the way to `towards`; 0 when
+    // `towards` sees its back.
+    static float emittingCosine(const Emitter& e, glm::vec3 fromLightTowards);
 
     const Scene& scene_;
     RTCScene rtc_ = nullptr;
     std::vector<glm::mat4> transforms_;
     std::vector<std::vector<glm::vec3>> worldNormals_;   // per mesh, per vertex (empty: face normals)
+    std::vector<std::vector<glm::vec3>> worldPositions_; // per mesh, per vertex: for front faces
     std::vector<std::vector<uint32_t>> emitterIndex_;     // per mesh, per triangle: index into emitters_ or ~0u
     std::vector<Emitter> emitters_;
     std::vector<float> emitterCdf_;

@@ -1,5 +1,5 @@
 #pragma once
-// hush::Error: the one exception type hush throws. Its message says what went wrong
+// hush::Error: the one exception type hush throws (header-only: every layer uses it). Its message says what went wrong
 // and what to do about it; kind() lets code react without parsing text.
 #include <stdexcept>
 #include <string>
@@ -19,7 +19,22 @@ enum class ErrorKind {
     NotFound,            // a named thing (shader, file, resource) is missing
 };
 
-const char* toString(ErrorKind kind);
+// Inline, so that layers which only throw and report errors (the tracer) need no rhi library.
+inline const char* toString(ErrorKind kind) {
+    switch (kind) {
+    case ErrorKind::NoVulkanLoader: return "no-vulkan-loader";
+    case ErrorKind::NoDriver: return "no-driver";
+    case ErrorKind::NoAdapter: return "no-adapter";
+    case ErrorKind::Unsupported: return "unsupported";
+    case ErrorKind::InvalidArgument: return "invalid-argument";
+    case ErrorKind::BindingMismatch: return "binding-mismatch";
+    case ErrorKind::OutOfMemory: return "out-of-memory";
+    case ErrorKind::DeviceLost: return "device-lost";
+    case ErrorKind::Vulkan: return "vulkan";
+    case ErrorKind::NotFound: return "not-found";
+    }
+    return "unknown";
+}
 
 class Error : public std::runtime_error {
 public:

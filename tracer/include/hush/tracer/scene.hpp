@@ -18,6 +18,10 @@ struct Material {
     glm::vec3 specular{0.0f};     // F0; 0 means a purely matte surface
     float roughness = 0.5f;       // GGX alpha; below kMirrorRoughness the lobe is a mirror
     glm::vec3 emission{0.0f};     // emitted radiance (an area light when non-zero)
+    // Area lights emit from their front face, the side their triangles wind
+    // counter-clockwise on (as in the reference renderer of the Cornell box); set
+    // this for a light that emits from both sides.
+    bool doubleSidedEmission = false;
 };
 
 inline constexpr float kMirrorRoughness = 1e-3f;

@@ -63,7 +63,9 @@ std::vector<Channel> parseChannelList(std::string_view list);
 struct CameraInfo {
     glm::mat4 view{1.0f};         // world -> view (camera looks down -Z)
     glm::mat4 projection{1.0f};   // view -> clip (Vulkan-style depth 0..1, y down in NDC)
-    glm::vec2 jitter{0.0f};       // subpixel offset of the primary rays, in pixels
+    // The primary ray of pixel (x, y) passes through (x + 0.5 + jitter.x, y + 0.5 +
+    // jitter.y); the projection matrix itself carries no jitter.
+    glm::vec2 jitter{0.0f};
     glm::vec3 position{0.0f};
     float verticalFovDegrees = 45.0f;
     float nearPlane = 0.1f;

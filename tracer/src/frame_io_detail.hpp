@@ -1,0 +1,43 @@
+#pragma once
+// Private helpers shared by the frame writer, the frame reader and the BMFR dataset
+// reader. Only src/ sees OpenEXR: the public headers stay free of it.
+#include <string>
+#include <string_view>
+
+#include <Imath/ImathBox.h>
+#include <OpenEXR/ImfHeader.h>
+
+#include <hush/rhi/error.hpp>
+
+namespace hush::tracer::detail {
+
+// Header attribute names (docs/frame-format.md, "Header attributes"). All stay within
+// 31 characters so that files need no "long names" flag and older readers cope.
+inline constexpr const char* kAttrFormatVersion = "hush.formatVersion";
+inline constexpr const char* kAttrFrameIndex = "hush.frameIndex";
+inline constexpr const char* kAttrScene = "hush.scene";
+inline constexpr const char* kAttrReferenceSpp = "hush.referenceSpp";
+inline constexpr const char* kCameraPrefix = "hush.camera.";
+inline constexpr const char* kPreviousCameraPrefix = "hush.previousCamera.";
+// Suffixes after either camera prefix.
+inline constexpr const char* kCamView = "view";
+inline constexpr const char* kCamProjection = "projection";
+inline constexpr const char* kCamJitter = "jitter";
+inline constexpr const char* kCamPosition = "position";
+inline constexpr const char* kCamFov = "fov";
+inline constexpr const char* kCamNear = "near";
+inline constexpr const char* kCamFar = "far";
+
+// Throws hush::Error naming `path` if it is missing, not a regular file, or does not
+// start with the OpenEXR magic number. `what` says what the caller wanted ("frame").
+// Checked up front because OpenEXR's own messages for these cases are obscure.
+void checkExrFile(const std::string& path, std::string_view what);
+
+std::string boxText(const Imath::Box2i& box);   // "(0,0)-(12,6)"
+std::string compressionName(Imf::Compression compression);
+
+// A frame file's number from its name, "frame_0012.exr" -> 12; -1 if the name does
+// not have that form (or the number does not fit 32 bits).
+long long frameIndexFromFileName(std::string_view fileName);
+
+} // namespace hush::tracer::detail

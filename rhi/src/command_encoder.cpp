@@ -250,7 +250,8 @@ CommandBuffer CommandEncoder::finish() {
     enc->requireOutsidePass("finish");
     enc->finished = true;
     if (enc->reusable) {
-        checkVk(enc->device->vk.vkEndCommandBuffer(enc->commandBuffer), "vkEndCommandBuffer for '" + enc->label + "'");
+        const VkResult ended = enc->device->vk.vkEndCommandBuffer(enc->commandBuffer);
+        if (ended < 0) checkVk(ended, "vkEndCommandBuffer for '" + enc->label + "'");
         auto& cb = enc->reusableBuffer;
         cb->submitted = false;
         cb->keepAlive.swap(enc->keepAlive);   // swap, not move: both keep their capacity

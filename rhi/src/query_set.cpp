@@ -70,7 +70,7 @@ void QuerySet::readTicks(uint32_t first, std::span<uint64_t> out) const {
     if (result == VK_NOT_READY)
         fail(ErrorKind::InvalidArgument, "timestamps of query set '" + impl->label +
                                              "' are not available: wait for the submission that writes them");
-    checkVk(result, "vkGetQueryPoolResults for query set '" + impl->label + "'");
+    if (result < 0) checkVk(result, "vkGetQueryPoolResults for query set '" + impl->label + "'");
 }
 
 double QuerySet::elapsedMs(uint32_t beginIndex, uint32_t endIndex) const {

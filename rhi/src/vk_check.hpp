@@ -14,6 +14,11 @@ const char* vkResultName(VkResult result);
 // OutOfMemory for the two out-of-memory codes, Vulkan for the rest. `what` names the
 // operation ("vkQueueSubmit2 for command buffer 'frame'").
 void checkVk(VkResult result, const std::string& what);
+// The same for a fixed description: nothing is built unless the call failed, so
+// per-frame calls (submit, wait, reset) do not allocate.
+inline void checkVk(VkResult result, const char* what) {
+    if (result < 0) checkVk(result, std::string(what));
+}
 
 [[noreturn]] void fail(ErrorKind kind, const std::string& message);
 

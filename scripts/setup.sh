@@ -22,6 +22,7 @@ packages=(
   libembree-dev                 # the CPU path tracer (tracer/)
   libopenexr-dev                # frame files (tracer/)
   libglm-dev                    # maths (tracer/)
+  nlohmann-json3-dev            # JSON scene files (tracer/)
   catch2                        # test framework (v2)
   vulkan-validationlayers       # tests run with validation + synchronization validation
   vulkan-tools                  # vulkaninfo, for diagnosing a machine

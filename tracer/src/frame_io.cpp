@@ -83,8 +83,9 @@ void checkExrFile(const std::string& path, std::string_view what) {
 }
 
 std::string boxText(const Imath::Box2i& box) {
-    return "(" + std::to_string(box.min.x) + "," + std::to_string(box.min.y) + ")-(" + std::to_string(box.max.x) +
-           "," + std::to_string(box.max.y) + ")";
+    char text[96];
+    std::snprintf(text, sizeof text, "(%d,%d)-(%d,%d)", box.min.x, box.min.y, box.max.x, box.max.y);
+    return text;
 }
 
 std::string compressionName(Imf::Compression compression) {

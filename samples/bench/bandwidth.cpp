@@ -219,20 +219,12 @@ int run(const Options& options) {
 } // namespace hush::bench
 
 int main(int argc, char** argv) {
-    try {
+    return hush::bench::guardedMain("hush-bench-bandwidth", [&] {
         hush::bench::Options options;
         if (!hush::bench::parseOptions(argc, argv, options)) {
             std::printf("%.*s", int(hush::bench::kUsage.size()), hush::bench::kUsage.data());
             return 0;
         }
         return hush::bench::run(options);
-    } catch (const hush::Error& error) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "hush-bench-bandwidth: error (%s): %s\n", hush::toString(error.kind()), error.what());
-        return 2;
-    } catch (const std::exception& error) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "hush-bench-bandwidth: internal error: %s\n", error.what());
-        return 2;
-    }
+    });
 }

@@ -99,3 +99,22 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
 }
 
 } // namespace hush::bench
+
+namespace hush::bench {
+
+int guardedMain(std::string_view program, const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const hush::Error& error) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "%.*s: error (%s): %s\n", int(program.size()), program.data(), hush::toString(error.kind()),
+                     error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "%.*s: internal error: %s\n", int(program.size()), program.data(), error.what());
+        return 2;
+    }
+}
+
+} // namespace hush::bench

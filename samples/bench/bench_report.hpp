@@ -3,6 +3,7 @@
 // repeated timings, a description of the machine, and result files written so
 // that an interrupted run never leaves a half-written one behind.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,5 +33,10 @@ std::string jsonString(std::string_view text);
 // `path` (atomic on one file system). Creates the parent directory. Throws
 // hush::Error (NotFound) naming the path when it cannot.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents);
+
+// Runs a benchmark's body and turns what it throws into the shared exit codes:
+// 2 with "<program>: error (<kind>): ..." for a hush::Error, 2 with "internal
+// error" for anything else; otherwise the body's own code.
+int guardedMain(std::string_view program, const std::function<int()>& body);
 
 } // namespace hush::bench

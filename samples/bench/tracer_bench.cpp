@@ -61,7 +61,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
+    return bench::guardedMain("hush-bench-tracer", [&] {
         const Options options = parse(argc, argv);
         std::vector<Row> rows;
         std::printf("hush-bench-tracer on %s, %u threads\n\n", bench::hostCpuName().c_str(),
@@ -122,8 +122,5 @@ int main(int argc, char** argv) {
         bench::writeFileAtomically(options.output, json);
         std::printf("\nwritten to %s\n", options.output.c_str());
         return 0;
-    } catch (const Error& e) {
-        std::fprintf(stderr, "hush-bench-tracer: error (%s): %s\n", toString(e.kind()), e.what());
-        return 2;
-    }
+    });
 }

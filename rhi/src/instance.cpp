@@ -16,8 +16,7 @@ namespace hush::rhi {
 namespace detail {
 
 InstanceImpl::~InstanceImpl() {
-    if (messenger != VK_NULL_HANDLE && vkDestroyDebugUtilsMessengerEXT)
-        vkDestroyDebugUtilsMessengerEXT(instance, messenger, nullptr);
+    if (messenger != VK_NULL_HANDLE && destroyMessenger) destroyMessenger(instance, messenger, nullptr);
     if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
     // The loader stays open: volk's global function pointers may still be used by
     // another instance, and unloading libvulkan buys nothing.
@@ -172,9 +171,12 @@ Instance Instance::create(const InstanceDesc& desc) {
     checkVk(result, "vkCreateInstance");
     volkLoadInstanceOnly(impl->instance);
 
-    if (impl->validation)
+    if (impl->validation) {
         checkVk(vkCreateDebugUtilsMessengerEXT(impl->instance, &messengerInfo, nullptr, &impl->messenger),
                 "vkCreateDebugUtilsMessengerEXT");
+        impl->destroyMessenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(impl->instance, "vkDestroyDebugUtilsMessengerEXT"));
+    }
 
     impl->adapters = enumerateAdapterRecords(impl->instance);
     std::stable_sort(impl->adapters.begin(), impl->adapters.end(), [](const auto& a, const auto& b) {

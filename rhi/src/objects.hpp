@@ -29,6 +29,9 @@ struct InstanceImpl {
     void* loader = nullptr;               // dlopen handle; null for an imported device's loader
     VkInstance instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    // This instance's own entry point: volk's global one is reloaded by every
+    // Instance::create, and an instance without debug utils would null it.
+    PFN_vkDestroyDebugUtilsMessengerEXT destroyMessenger = nullptr;
     bool validation = false;
     std::vector<AdapterRecord> adapters;
 

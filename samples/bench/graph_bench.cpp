@@ -426,7 +426,7 @@ int run(const Options& options) {
     std::vector<OverheadResult> overheads;
     bool verified = true;
     // 1280x720: the real case. 16x16: the same recording with next to no GPU work, so
-    // the CPU's caches are not flushed by lavapipe's shader threads between frames.
+    // that on lavapipe little else runs on the CPU between two recordings.
     // The small case takes ten times the frames: they are cheap, and its figures are small.
     for (const Extent2D size : {Extent2D{1280, 720}, Extent2D{16, 16}}) {
         const uint32_t scale = size.width < 100 ? 10 : 1;

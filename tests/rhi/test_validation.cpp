@@ -63,3 +63,24 @@ TEST_CASE("validation: a missing barrier is reported by synchronization validati
     CHECK_THAT(seen.front(), Contains("SYNC-HAZARD-READ-AFTER-WRITE"));
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(validation);
 }
+
+TEST_CASE("validation: a second instance does not make the first leak its debug messenger", "[validation]") {
+    // Each Instance::create reloads volk's global instance functions; an instance
+    // without debug utils would null the one the first needs to destroy its
+    // messenger, and the layer would report the leak when the first is destroyed.
+    std::vector<std::string> seen;
+    std::mutex seenMutex;
+    {
+        auto withValidation = Instance::create({.validation = true,
+                                                     .validationFromEnvironment = false,
+                                                     .onValidationMessage = [&](const std::string& message) {
+                                                         std::lock_guard lock(seenMutex);
+                                                         seen.push_back(message);
+                                                     }});
+        auto without = Instance::create({.validation = false, .validationFromEnvironment = false});
+        REQUIRE(withValidation.validationEnabled());
+        REQUIRE_FALSE(without.validationEnabled());
+    }   // `without` goes first, then the validated instance with its messenger
+    INFO("messages:\n" << joinMessages(seen));
+    REQUIRE(seen.empty());
+}

@@ -50,16 +50,6 @@ struct Row {
     std::string skipped;   // why the case could not run on this adapter
 };
 
-uint32_t parseCount(std::string_view flag, std::string_view text, uint32_t minimum) {
-    uint32_t value = 0;
-    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || value < minimum) {
-        throw Error(ErrorKind::InvalidArgument, std::string(flag) + " needs a whole number >= " +
-                                                    std::to_string(minimum) + ", got '" + std::string(text) + "'");
-    }
-    return value;
-}
-
 // Returns false when the program should just print the usage and stop.
 bool parseOptions(int argc, char** argv, Options& options) {
     for (int i = 1; i < argc; ++i) {

@@ -2,6 +2,7 @@
 #include "bench_report.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -101,6 +102,15 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
 } // namespace hush::bench
 
 namespace hush::bench {
+
+uint32_t parseCount(std::string_view flag, std::string_view text, uint32_t minimum) {
+    uint32_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || value < minimum)
+        throw hush::Error(hush::ErrorKind::InvalidArgument, std::string(flag) + " needs a whole number >= " +
+                                                                std::to_string(minimum) + ", got '" + std::string(text) + "'");
+    return value;
+}
 
 int guardedMain(std::string_view program, const std::function<int()>& body) {
     try {

@@ -2,6 +2,7 @@
 // What every hush benchmark needs to report its figures: order statistics of
 // repeated timings, a description of the machine, and result files written so
 // that an interrupted run never leaves a half-written one behind.
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -33,6 +34,10 @@ std::string jsonString(std::string_view text);
 // `path` (atomic on one file system). Creates the parent directory. Throws
 // hush::Error (NotFound) naming the path when it cannot.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents);
+
+// A command-line count: the whole text a number >= minimum, else hush::Error
+// (InvalidArgument) naming the flag and the text.
+uint32_t parseCount(std::string_view flag, std::string_view text, uint32_t minimum);
 
 // Runs a benchmark's body and turns what it throws into the shared exit codes:
 // 2 with "<program>: error (<kind>): ..." for a hush::Error, 2 with "internal

@@ -60,15 +60,6 @@ constexpr std::string_view kUsage =
     "  --adapter TEXT  use the first adapter whose name contains TEXT (default: HUSH_ADAPTER)\n";
 
 
-uint32_t parseCount(std::string_view flag, std::string_view text, uint32_t minimum) {
-    uint32_t value = 0;
-    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || value < minimum)
-        throw Error(ErrorKind::InvalidArgument, std::string(flag) + " needs a whole number >= " +
-                                                    std::to_string(minimum) + ", got '" + std::string(text) + "'");
-    return value;
-}
-
 bool parseOptions(int argc, char** argv, Options& options) {
     for (int i = 1; i < argc; ++i) {
         std::string_view arg = argv[i];

@@ -42,15 +42,14 @@ Options parse(int argc, char** argv) {
             if (i + 1 >= argc) throw Error(ErrorKind::InvalidArgument, std::string(name) + " needs a value");
             return std::string(argv[++i]);
         };
-        if (a == "--frames") o.frames = uint32_t(std::stoul(value("--frames")));
-        else if (a == "--reference-spp") o.referenceSpp = uint32_t(std::stoul(value("--reference-spp")));
+        if (a == "--frames") o.frames = bench::parseCount("--frames", value("--frames"), 1);
+        else if (a == "--reference-spp") o.referenceSpp = bench::parseCount("--reference-spp", value("--reference-spp"), 0);
         else if (a == "--output") o.output = value("--output");
         else if (a == "--help") {
             std::printf("usage: hush-bench-tracer [--frames N (5)] [--reference-spp N (64)] [--output PATH]\n");
             std::exit(0);
         } else throw Error(ErrorKind::InvalidArgument, "unknown option '" + a + "' (try --help)");
     }
-    if (o.frames == 0) throw Error(ErrorKind::InvalidArgument, "--frames must be at least 1");
     return o;
 }
 

@@ -1,0 +1,32 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+// radiance = sum of the filtered illumination terms * demodulationFactor(albedo): the
+// inverse of common/demodulate.comp, over one or two terms (direct + indirect).
+#include "common/grid.glsl"
+#include "common/demodulation.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform texture2D illuminationA;
+layout(set = 0, binding = 1) uniform texture2D illuminationB;
+layout(set = 0, binding = 2) uniform texture2D albedo;
+layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D radiance;
+
+layout(push_constant) uniform Params {
+    float eps;
+    uint termCount;   // 1: illuminationB is not read
+} params;
+
+void main() {
+    ivec2 p = hushPixel();
+    if (!hushInside(p, imageSize(radiance))) {
+        return;
+    }
+    vec3 sum = texelFetch(illuminationA, p, 0).rgb;
+    if (params.termCount > 1u) {
+        sum += texelFetch(illuminationB, p, 0).rgb;
+    }
+    vec3 factor = demodulationFactor(texelFetch(albedo, p, 0).rgb, params.eps);
+    imageStore(radiance, p, vec4(sum * factor, 1.0));
+}

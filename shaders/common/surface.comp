@@ -1,0 +1,48 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+// The primary surface in the two textures every edge-stopping and reprojection test
+// reads: normalDepth = (world normal xyz, linear depth) and gradientMesh = (dz/dx,
+// dz/dy, mesh id, 0). The gradient takes, per axis, the one-sided difference of
+// smaller magnitude, so that a depth edge next to a pixel does not inflate its slope.
+#include "common/grid.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform texture2D normal;
+layout(set = 0, binding = 1) uniform texture2D depth;
+layout(set = 0, binding = 2) uniform texture2D meshId;
+layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D normalDepth;
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D gradientMesh;
+
+float depthAt(ivec2 p) {
+    return texelFetch(depth, p, 0).x;
+}
+
+// The smaller one-sided difference along `axis`; 0 where the image is one pixel wide.
+float slope(ivec2 p, ivec2 axis, ivec2 size) {
+    float z = depthAt(p);
+    ivec2 lo = p - axis, hi = p + axis;
+    bool hasLo = all(greaterThanEqual(lo, ivec2(0)));
+    bool hasHi = all(lessThan(hi, size));
+    float dLo = hasLo ? z - depthAt(lo) : 0.0;
+    float dHi = hasHi ? depthAt(hi) - z : 0.0;
+    if (hasLo && hasHi) {
+        return abs(dLo) < abs(dHi) ? dLo : dHi;
+    }
+    return hasLo ? dLo : dHi;
+}
+
+void main() {
+    ivec2 p = hushPixel();
+    ivec2 size = imageSize(normalDepth);
+    if (!hushInside(p, size)) {
+        return;
+    }
+    vec3 n = texelFetch(normal, p, 0).xyz;
+    float len = length(n);
+    n = len > 1e-6 ? n / len : vec3(0.0);
+    imageStore(normalDepth, p, vec4(n, depthAt(p)));
+    imageStore(gradientMesh, p, vec4(slope(p, ivec2(1, 0), size), slope(p, ivec2(0, 1), size),
+                                     texelFetch(meshId, p, 0).x, 0.0));
+}

@@ -1,0 +1,92 @@
+#include "reference/common_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hush::passes_test::reference {
+
+namespace {
+void factor(const FloatImage& albedo, uint32_t x, uint32_t y, float eps, float out[3]) {
+    bool allBelow = true;
+    for (uint32_t c = 0; c < 3; ++c) allBelow = allBelow && albedo.at(x, y, c) < eps;
+    for (uint32_t c = 0; c < 3; ++c) out[c] = allBelow ? 1.0f : std::max(albedo.at(x, y, c), eps);
+}
+} // namespace
+
+FloatImage demodulate(const FloatImage& radiance, const FloatImage& albedo, float eps) {
+    FloatImage out(radiance.width, radiance.height, 4, 1.0f);
+    for (uint32_t y = 0; y < out.height; ++y)
+        for (uint32_t x = 0; x < out.width; ++x) {
+            float f[3];
+            factor(albedo, x, y, eps, f);
+            for (uint32_t c = 0; c < 3; ++c) out.at(x, y, c) = radiance.at(x, y, c) / f[c];
+        }
+    return out;
+}
+
+FloatImage remodulate(const FloatImage& a, const FloatImage* b, const FloatImage& albedo, float eps) {
+    FloatImage out(a.width, a.height, 4, 1.0f);
+    for (uint32_t y = 0; y < out.height; ++y)
+        for (uint32_t x = 0; x < out.width; ++x) {
+            float f[3];
+            factor(albedo, x, y, eps, f);
+            for (uint32_t c = 0; c < 3; ++c)
+                out.at(x, y, c) = (a.at(x, y, c) + (b ? b->at(x, y, c) : 0.0f)) * f[c];
+        }
+    return out;
+}
+
+FloatImage sanitize(const FloatImage& in, float lo, float hi, float replacement, size_t& replacedPixels) {
+    FloatImage out = in;
+    replacedPixels = 0;
+    for (size_t p = 0; p < size_t(in.width) * in.height; ++p) {
+        bool replaced = false;
+        for (uint32_t c = 0; c < in.channels; ++c) {
+            float& v = out.pixels[p * in.channels + c];
+            if (!std::isfinite(v)) {
+                v = replacement;
+                replaced = true;
+            }
+            v = std::clamp(v, lo, hi);
+        }
+        replacedPixels += replaced ? 1 : 0;
+    }
+    return out;
+}
+
+} // namespace hush::passes_test::reference
+
+namespace hush::passes_test::reference {
+
+namespace {
+float slope(const FloatImage& depth, int x, int y, int ax, int ay) {
+    const float z = depth.at(uint32_t(x), uint32_t(y));
+    const int lx = x - ax, ly = y - ay, hx = x + ax, hy = y + ay;
+    const bool hasLo = lx >= 0 && ly >= 0;
+    const bool hasHi = hx < int(depth.width) && hy < int(depth.height);
+    const float dLo = hasLo ? z - depth.at(uint32_t(lx), uint32_t(ly)) : 0.0f;
+    const float dHi = hasHi ? depth.at(uint32_t(hx), uint32_t(hy)) - z : 0.0f;
+    if (hasLo && hasHi) return std::fabs(dLo) < std::fabs(dHi) ? dLo : dHi;
+    return hasLo ? dLo : dHi;
+}
+} // namespace
+
+SurfaceImages surface(const FloatImage& normal, const FloatImage& depth, const FloatImage& meshId) {
+    SurfaceImages s{FloatImage(depth.width, depth.height, 4), FloatImage(depth.width, depth.height, 4)};
+    for (uint32_t y = 0; y < depth.height; ++y)
+        for (uint32_t x = 0; x < depth.width; ++x) {
+            const float nx = normal.at(x, y, 0), ny = normal.at(x, y, 1), nz = normal.at(x, y, 2);
+            const float len = std::sqrt(nx * nx + ny * ny + nz * nz);
+            const float inv = len > 1e-6f ? 1.0f / len : 0.0f;
+            s.normalDepth.at(x, y, 0) = nx * inv;
+            s.normalDepth.at(x, y, 1) = ny * inv;
+            s.normalDepth.at(x, y, 2) = nz * inv;
+            s.normalDepth.at(x, y, 3) = depth.at(x, y);
+            s.gradientMesh.at(x, y, 0) = slope(depth, int(x), int(y), 1, 0);
+            s.gradientMesh.at(x, y, 1) = slope(depth, int(x), int(y), 0, 1);
+            s.gradientMesh.at(x, y, 2) = meshId.at(x, y);
+        }
+    return s;
+}
+
+} // namespace hush::passes_test::reference

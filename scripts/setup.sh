@@ -22,7 +22,8 @@ packages=(
   libembree-dev                 # the CPU path tracer (tracer/)
   libopenexr-dev                # frame files (tracer/)
   libglm-dev                    # maths (tracer/)
-  nlohmann-json3-dev            # JSON scene files (tracer/)
+  nlohmann-json3-dev            # JSON scene and chain files (tracer/, passes/)
+  libpng-dev                    # PNG images of the denoised frames (samples/cli)
   catch2                        # test framework (v2)
   vulkan-validationlayers       # tests run with validation + synchronization validation
   vulkan-tools                  # vulkaninfo, for diagnosing a machine

@@ -23,6 +23,8 @@ struct Command {
 
 const Command& infoCommand();
 const Command& renderCommand();
+const Command& denoiseCommand();
+const Command& demoCommand();
 
 // Takes the value of an option given as "--name value" or "--name=value" at
 // args[i] (advancing i past a separate value). Returns false if args[i] is not

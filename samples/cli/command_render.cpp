@@ -1,6 +1,5 @@
 // `hush render`: the tracer's frames of a scene's camera path, written in the frame
 // format (docs/frame-format.md), with progress and an estimate of the time left.
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
@@ -10,7 +9,7 @@
 #include <hush/tracer/renderer.hpp>
 
 #include "command.hpp"
-#include "progress.hpp"
+#include "render_sequence.hpp"
 #include "scene_argument.hpp"
 
 namespace hush::cli {
@@ -81,33 +80,11 @@ int runRender(std::span<const std::string_view> args) {
                 settings.referenceSpp ? ("every " + std::to_string(referenceEvery) + " frame(s)").c_str() : "(none)");
     std::fflush(stdout);
 
-    // Progress in units of paths: a reference frame costs referenceSpp times more.
-    auto frameCost = [&](uint32_t i) {
-        return 1.0 + ((settings.referenceSpp && (i - first) % referenceEvery == 0) ? settings.referenceSpp : 0.0);
-    };
-    double totalCost = 0.0, doneCost = 0.0;
-    for (uint32_t i = first; i < first + frames; ++i) totalCost += frameCost(i);
-    ProgressLine progress("render");
-    const auto start = std::chrono::steady_clock::now();
-    for (uint32_t i = first; i < first + frames; ++i) {
-        tracer::RenderSettings frameSettings = settings;
-        const bool withReference = settings.referenceSpp && (i - first) % referenceEvery == 0;
-        std::erase(frameSettings.channels, tracer::Channel::Reference);
-        if (withReference) frameSettings.channels.push_back(tracer::Channel::Reference);
-        const std::string detail = "frame " + std::to_string(i - first + 1) + "/" + std::to_string(frames);
-        const double cost = frameCost(i);
-        const tracer::Frame frame = renderer.render(i, frameSettings, [&](uint64_t done, uint64_t total) {
-            progress.update((doneCost + cost * double(done) / double(total)) / totalCost, detail);
-        });
-        tracer::writeFrame(frame, tracer::framePath(outFolder, i));
-        doneCost += cost;
-        progress.update(doneCost / totalCost, detail);
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    char summary[160];
-    std::snprintf(summary, sizeof summary, "done: %u frames in %s, %.2f Mrays/s, written to %s", frames,
-                  formatSeconds(seconds).c_str(), double(renderer.raysTraced()) / seconds * 1e-6, outFolder.c_str());
-    progress.finish(summary);
+    renderSequence(renderer, {.settings = settings,
+                              .first = first,
+                              .frames = frames,
+                              .referenceEvery = referenceEvery,
+                              .outFolder = outFolder});
     return kExitOk;
 }
 

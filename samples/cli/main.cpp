@@ -16,8 +16,8 @@ namespace hush::cli {
 namespace {
 
 // Every subcommand, in the order `hush --help` lists them.
-std::array<const Command*, 2> commands() {
-    return {&infoCommand(), &renderCommand()};
+std::array<const Command*, 4> commands() {
+    return {&demoCommand(), &denoiseCommand(), &renderCommand(), &infoCommand()};
 }
 
 std::string commandNames() {

@@ -1,0 +1,49 @@
+#pragma once
+// GraphChain: a chain described node by node in a chain file. Loading checks the
+// whole description (node types, ports, references, outputs); build() then adds
+// the sanitiser and each node in file order.
+#include <any>
+#include <string>
+#include <vector>
+
+#include <hush/passes/chain.hpp>
+#include <hush/passes/common/sanitize.hpp>
+
+#include "chain_file/node_types.hpp"
+
+namespace hush::passes::chain_file {
+
+struct NodeInstance {
+    std::string id;
+    const NodeType* type = nullptr;
+    std::vector<std::string> inputs;   // by input port: a reference, "" when unconnected
+    std::any settings;
+    std::string path;                  // "nodes[3]", for errors
+};
+
+struct ChainDescription {
+    std::string name;
+    std::string source;                // the file, for errors
+    SanitizeSettings sanitize;
+    std::vector<NodeInstance> nodes;
+    std::string displayOutput;         // a reference
+    std::string radianceOutput;        // a reference; "" = the display
+};
+
+// Checks every reference ("input.<channel>", "<id>", "<id>.<port>") against the
+// channels and the nodes defined before it, and its kind against the port's.
+void validate(const ChainDescription& description);
+
+class GraphChain : public Chain {
+public:
+    explicit GraphChain(ChainDescription description);
+    std::string name() const override { return description_.name; }
+    std::vector<InputChannel> inputs() const override { return inputs_; }
+    ChainOutputs build(NodeContext& ctx, const DenoiseInputs& inputs) override;
+
+private:
+    ChainDescription description_;
+    std::vector<InputChannel> inputs_;
+};
+
+} // namespace hush::passes::chain_file

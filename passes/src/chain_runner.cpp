@@ -1,0 +1,57 @@
+#include <hush/passes/chain_runner.hpp>
+
+#include <cstring>
+
+#include <hush/rhi/error.hpp>
+
+namespace hush::passes {
+
+namespace {
+graph::RenderGraphDesc labelled(graph::RenderGraphDesc desc, const Chain& chain) {
+    if (desc.label == graph::RenderGraphDesc{}.label) desc.label = chain.name();
+    return desc;
+}
+} // namespace
+
+ChainRunner::ChainRunner(rhi::Device device, std::unique_ptr<Chain> chain, rhi::Extent2D size,
+                         const graph::RenderGraphDesc& desc)
+    : device_(device),
+      chain_(std::move(chain)),
+      pipelines_(device),
+      graph_(device, labelled(desc, *chain_)),
+      inputs_(device, size, chain_->inputs()) {
+    graph_.setOutputSize(size);
+    NodeContext ctx{graph_, pipelines_};
+    outputs_ = chain_->build(ctx, inputs_.import(graph_));
+    graph_.compile();
+}
+
+void ChainRunner::run() {
+    graph_.execute();
+    graph_.waitIdle();
+}
+
+std::vector<float> ChainRunner::readRgba(graph::TextureHandle h) const {
+    const auto& texture = graph_.outputTexture(h);
+    if (texture.format() != rhi::Format::RGBA32Float)
+        throw Error(ErrorKind::InvalidArgument, "chain '" + chain_->name() + "': output '" + texture.label() +
+                                                    "' is " + std::string(rhi::toString(texture.format())) +
+                                                    ", not rgba32float");
+    auto bytes = device_.queue().readTexture({.texture = texture, .state = graph_.outputState(h)});
+    std::vector<float> values(bytes.size() / sizeof(float));
+    std::memcpy(values.data(), bytes.data(), values.size() * sizeof(float));
+    return values;
+}
+
+std::vector<float> ChainRunner::readDisplay() const { return readRgba(outputs_.display); }
+std::vector<float> ChainRunner::readRadiance() const { return readRgba(outputs_.radiance); }
+
+std::array<uint32_t, kInputChannelCount> ChainRunner::sanitizedCounts() const {
+    std::array<uint32_t, kInputChannelCount> counts{};
+    if (!outputs_.sanitizeCounts.valid()) return counts;
+    auto bytes = device_.queue().readBuffer(graph_.outputBuffer(outputs_.sanitizeCounts));
+    std::memcpy(counts.data(), bytes.data(), std::min(bytes.size(), sizeof counts));
+    return counts;
+}
+
+} // namespace hush::passes

@@ -1,0 +1,23 @@
+#include <hush/passes/eaw/chain.hpp>
+
+namespace hush::passes {
+
+std::vector<InputChannel> EawChain::inputs() const {
+    return {InputChannel::Color, InputChannel::Albedo, InputChannel::Normal, InputChannel::Position};
+}
+
+ChainOutputs EawChain::build(NodeContext& ctx, const DenoiseInputs& raw) {
+    const auto s = addSanitizePass(ctx, "eaw.sanitize", raw, settings_.sanitize);
+    const auto& in = s.inputs;
+    auto illumination =
+        addDemodulatePass(ctx, "eaw.demodulate", in[InputChannel::Color], in[InputChannel::Albedo], settings_.demodulate);
+    auto filtered = addEawAtrousLevels(ctx, "eaw.atrous", illumination, in[InputChannel::Normal],
+                                       in[InputChannel::Position], settings_.atrous);
+    auto radiance = addRemodulatePass(ctx, "eaw.remodulate", filtered, {}, in[InputChannel::Albedo], settings_.demodulate);
+    auto display = addTonemapPass(ctx, "eaw.tonemap", radiance, settings_.tonemap);
+    ctx.graph.markOutput(radiance);
+    ctx.graph.markOutput(display);
+    return {display, radiance, s.counts};
+}
+
+} // namespace hush::passes

@@ -1,0 +1,119 @@
+// `hush denoise`: one or more chains over a folder of frames, with outputs, a
+// quality table and report.json.
+#include <cstdio>
+#include <filesystem>
+
+#include <hush/passes/chain_file.hpp>
+#include <hush/rhi/error.hpp>
+#include <hush/rhi/rhi.hpp>
+#include <hush/tracer/frame_io.hpp>
+
+#include "command.hpp"
+#include "denoise_job.hpp"
+#include "scene_argument.hpp"
+
+namespace hush::cli {
+namespace {
+
+const std::string& usage() {
+    static const std::string text =
+        "usage: hush denoise --in <folder> --out <folder> [--chain <list>] [--first <i>] [--frames <n>]\n"
+        "                    [--no-exr] [--no-png] [--side-by-side] [--dump-graph] [--adapter <text>]\n"
+        "\n"
+        "Runs denoising chains over the frames of <folder> (docs/frame-format.md), in index\n"
+        "order. Writes <out>/<chain>/frame_<i>.exr (filtered radiance, layer 'color') and .png\n"
+        "(the tonemapped display image, sRGB), the noisy input likewise under <out>/noisy/,\n"
+        "and <out>/report.json; prints per-pass GPU times and, for frames that carry a\n"
+        "'reference' layer, RMSE, relative MSE, PSNR and SSIM of the tonemapped images,\n"
+        "plus the temporal error between consecutive outputs.\n"
+        "\n"
+        "options:\n"
+        "  --chain <list>    comma-separated built-in chains (svgf, eaw) or chain files\n"
+        "                    (docs/passes/chain-files.md); default: svgf\n"
+        "  --in <folder>     the frames\n"
+        "  --out <folder>    where outputs go (created if missing)\n"
+        "  --first <i>       skip frames before index i\n"
+        "  --frames <n>      at most n frames\n"
+        "  --no-exr, --no-png  skip writing those outputs\n"
+        "  --side-by-side    <out>/side_by_side/frame_<i>.png: noisy | chains | reference\n"
+        "  --dump-graph      <out>/graph.<chain>.dot and .json: each compiled graph\n"
+        "  --adapter <text>  use the first adapter whose name contains <text>\n"
+        "\n"
+        "node types for chain files:\n";
+    static const std::string full = text + passes::describeChainNodes();
+    return full;
+}
+
+std::vector<std::string> splitList(const std::string& list) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start <= list.size()) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        if (comma > start) items.push_back(list.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return items;
+}
+
+int runDenoise(std::span<const std::string_view> args) {
+    DenoiseJobOptions options;
+    std::string in, chains = "svgf";
+    rhi::AdapterRequest request;
+    uint32_t first = 0, count = ~0u;
+    bool dump = false;
+    for (size_t i = 0; i < args.size(); ++i) {
+        std::string v;
+        if (takeOption(args, i, "--in", v)) in = v;
+        else if (takeOption(args, i, "--out", v)) options.outFolder = v;
+        else if (takeOption(args, i, "--chain", v)) chains = v;
+        else if (takeOption(args, i, "--first", v)) first = parseCount(v, "--first", 0, ~0u);
+        else if (takeOption(args, i, "--frames", v)) count = parseCount(v, "--frames", 1, ~0u);
+        else if (takeOption(args, i, "--adapter", v)) request.nameContains = v, request.nameFromEnvironment = false;
+        else if (args[i] == "--no-exr") options.writeExr = false;
+        else if (args[i] == "--no-png") options.writePng = false;
+        else if (args[i] == "--side-by-side") options.sideBySide = true;
+        else if (args[i] == "--dump-graph") dump = true;
+        else unknownArgument("denoise", args[i]);
+    }
+    if (in.empty()) throw Error(ErrorKind::InvalidArgument, "hush denoise needs --in <folder of frames>");
+    if (options.outFolder.empty()) throw Error(ErrorKind::InvalidArgument, "hush denoise needs --out <folder>");
+    options.chains = splitList(chains);
+    if (options.chains.empty()) throw Error(ErrorKind::InvalidArgument, "--chain names no chain");
+    for (const auto& path : tracer::listFrames(in)) {
+        const auto name = std::filesystem::path(path).stem().string();   // frame_<i>
+        const auto index = std::stoul(name.substr(name.find('_') + 1));
+        if (index >= first && options.framePaths.size() < count) options.framePaths.push_back(path);
+    }
+    if (options.framePaths.empty())
+        throw Error(ErrorKind::NotFound, "'" + in + "' holds no frame with index >= " + std::to_string(first));
+    std::filesystem::create_directories(options.outFolder);
+    if (dump) options.dumpGraph = (std::filesystem::path(options.outFolder) / "graph").string();
+    return runDenoiseJobAndReport(options, request);
+}
+
+} // namespace
+
+int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterRequest& request) {
+    auto instance = rhi::Instance::create({});
+    auto adapter = instance.requestAdapter(request);
+    auto device = adapter.createDevice({.label = "hush denoise"});
+    std::printf("hush denoise: %zu frame(s) from %s, chains: ", options.framePaths.size(),
+                std::filesystem::path(options.framePaths.front()).parent_path().string().c_str());
+    for (size_t i = 0; i < options.chains.size(); ++i) std::printf("%s%s", i ? ", " : "", options.chains[i].c_str());
+    std::printf(", on %s\n", adapter.info().name.c_str());
+    std::fflush(stdout);
+    const auto result = runDenoiseJob(device, options);
+    std::fputs(formatReportTables(result).c_str(), stdout);
+    const auto reportPath = (std::filesystem::path(options.outFolder) / "report.json").string();
+    writeTextFile(reportPath, reportJson(result, adapter.info().name));
+    std::printf("\nwrote %s and the images under %s/\n", reportPath.c_str(), options.outFolder.c_str());
+    return kExitOk;
+}
+
+const Command& denoiseCommand() {
+    static const Command command{"denoise", "denoise frames with chains (svgf, eaw, a chain file); report quality",
+                                 usage(), runDenoise};
+    return command;
+}
+
+} // namespace hush::cli

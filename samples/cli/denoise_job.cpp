@@ -1,0 +1,149 @@
+#include "denoise_job.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include <hush/passes/chain_file.hpp>
+#include <hush/passes/common/tonemap.hpp>
+#include <hush/rhi/error.hpp>
+#include <hush/tracer/frame_io.hpp>
+
+#include "denoise_run.hpp"
+#include "png_file.hpp"
+#include "progress.hpp"
+
+namespace hush::cli {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+namespace {
+
+// Display values of an HDR image with the chains' default tonemap, for the noisy
+// baseline and the reference (the chains tonemap on the GPU with the same curve).
+RgbaImage tonemapped(const RgbaImage& hdr) {
+    RgbaImage out = hdr;
+    const passes::TonemapSettings settings;
+    for (size_t i = 0; i < size_t(out.width) * out.height; ++i) passes::tonemapRgb(settings, &out.rgba[i * 4]);
+    return out;
+}
+
+// The noisy radiance: `color`, else direct + indirect.
+RgbaImage noisyRadiance(const tracer::Frame& frame) {
+    if (frame.has(tracer::Channel::Color)) return toRgba(frame.get(tracer::Channel::Color));
+    if (frame.has(tracer::Channel::Direct) && frame.has(tracer::Channel::Indirect)) {
+        RgbaImage sum = toRgba(frame.get(tracer::Channel::Direct));
+        const RgbaImage indirect = toRgba(frame.get(tracer::Channel::Indirect));
+        for (size_t i = 0; i < sum.rgba.size(); ++i)
+            if (i % 4 != 3) sum.rgba[i] += indirect.rgba[i];
+        return sum;
+    }
+    throw Error(ErrorKind::NotFound, "frame " + std::to_string(frame.index) +
+                                         " has neither 'color' nor 'direct' + 'indirect': nothing to denoise");
+}
+
+std::string frameName(uint32_t index, const char* extension) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04u.%s", index, extension);
+    return name;
+}
+
+void writeOutputs(const DenoiseJobOptions& o, const std::string& chain, const tracer::Frame& source,
+                  const RgbaImage& radiance, const RgbaImage& display) {
+    const auto folder = std::filesystem::path(o.outFolder) / chain;
+    if (o.writeExr) {
+        tracer::Frame out;
+        out.width = source.width, out.height = source.height, out.index = source.index;
+        out.scene = source.scene;
+        out.camera = source.camera, out.previousCamera = source.previousCamera;
+        auto& color = out.add(tracer::Channel::Color);
+        for (size_t i = 0; i < size_t(out.width) * out.height; ++i)
+            for (size_t c = 0; c < 3; ++c) color.pixels[i * 3 + c] = radiance.rgba[i * 4 + c];
+        tracer::writeFrame(out, (folder / frameName(source.index, "exr")).string());
+    }
+    if (o.writePng)
+        writePng((folder / frameName(source.index, "png")).string(), display.width, display.height,
+                 encodeSrgb8(display));
+}
+
+} // namespace
+
+DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOptions& o) {
+    if (o.framePaths.empty()) throw Error(ErrorKind::InvalidArgument, "no frames to denoise");
+    const auto start = std::chrono::steady_clock::now();
+    const auto info = tracer::readFrameInfo(o.framePaths.front());
+    const rhi::Extent2D size{info.width, info.height};
+
+    DenoiseJobResult result;
+    result.width = size.width, result.height = size.height;
+    result.chains.push_back({.name = "noisy"});
+    std::vector<std::unique_ptr<DenoiseRun>> runs;
+    for (const auto& name : o.chains) {
+        runs.push_back(std::make_unique<DenoiseRun>(device, passes::makeChain(name), size));
+        result.chains.push_back({.name = runs.back()->chain().name()});
+    }
+    for (auto& c : result.chains) std::filesystem::create_directories(std::filesystem::path(o.outFolder) / c.name);
+    if (o.sideBySide) std::filesystem::create_directories(std::filesystem::path(o.outFolder) / "side_by_side");
+    if (!o.dumpGraph.empty())
+        for (auto& run : runs) run->graph().writeDump(o.dumpGraph + "." + run->chain().name());
+
+    passes::MetricsEvaluator metrics(device, size);
+    std::vector<RgbaImage> previous(result.chains.size());
+    ProgressLine progress("denoise");
+    for (size_t f = 0; f < o.framePaths.size(); ++f) {
+        const auto frame = tracer::readFrame(o.framePaths[f], {.requireChannels = false,
+                                                               .expectedWidth = size.width,
+                                                               .expectedHeight = size.height});
+        std::vector<RgbaImage> display(result.chains.size());
+        const RgbaImage noisy = noisyRadiance(frame);
+        display[0] = tonemapped(noisy);
+        writeOutputs(o, "noisy", frame, noisy, display[0]);
+        for (size_t c = 0; c < runs.size(); ++c) {
+            auto denoised = runs[c]->process(frame);
+            result.chains[c + 1].sanitizedPixels += denoised.sanitized;
+            writeOutputs(o, result.chains[c + 1].name, frame, denoised.radiance, denoised.display);
+            display[c + 1] = std::move(denoised.display);
+        }
+        const bool scored = frame.has(tracer::Channel::Reference);
+        RgbaImage reference;
+        if (scored) reference = tonemapped(toRgba(frame.get(tracer::Channel::Reference)));
+        for (size_t c = 0; c < result.chains.size(); ++c) {
+            if (scored) result.chains[c].scored.push_back({frame.index, metrics.compare(display[c].rgba, reference.rgba)});
+            if (f > 0) result.chains[c].temporalError.push_back(metrics.temporalError(display[c].rgba, previous[c].rgba));
+        }
+        if (scored && o.sideBySide) {
+            std::vector<const RgbaImage*> panels;
+            for (const auto& d : display) panels.push_back(&d);
+            panels.push_back(&reference);
+            const auto strip = cli::sideBySide(panels);
+            writePng((std::filesystem::path(o.outFolder) / "side_by_side" / frameName(frame.index, "png")).string(),
+                     strip.width, strip.height, encodeSrgb8(strip));
+        }
+        previous = std::move(display);
+        progress.update(double(f + 1) / double(o.framePaths.size()),
+                        "frame " + std::to_string(f + 1) + "/" + std::to_string(o.framePaths.size()));
+    }
+    for (size_t c = 0; c < runs.size(); ++c) {
+        auto& r = result.chains[c + 1];
+        r.passOrder = runs[c]->passNames();
+        r.passMs = runs[c]->passMs();
+        r.frameMs = runs[c]->frameMs();
+        const auto memory = runs[c]->graph().memory();
+        r.transientBytes = memory.transientAliasedBytes;
+        r.transientUnaliasedBytes = memory.transientUnaliasedBytes;
+        r.historyBytes = memory.historyBytes;
+    }
+    result.frames = uint32_t(o.framePaths.size());
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    progress.finish("done: " + std::to_string(result.frames) + " frames, " + std::to_string(runs.size()) +
+                    " chain(s) in " + formatSeconds(result.seconds));
+    return result;
+}
+
+} // namespace hush::cli

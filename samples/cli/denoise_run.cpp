@@ -1,0 +1,50 @@
+#include "denoise_run.hpp"
+
+#include <hush/rhi/error.hpp>
+
+namespace hush::cli {
+
+tracer::Channel tracerChannel(passes::InputChannel channel) {
+    const auto name = passes::inputChannelInfo(channel).name;
+    auto c = tracer::parseChannel(name);
+    if (!c) throw Error(ErrorKind::NotFound, "no frame layer called '" + std::string(name) + "'");
+    return *c;
+}
+
+DenoiseRun::DenoiseRun(rhi::Device device, std::unique_ptr<passes::Chain> chain, rhi::Extent2D size)
+    : runner_(std::move(device), std::move(chain), size), passNames_(runner_.graph().passOrder()) {}
+
+DenoisedFrame DenoiseRun::process(const tracer::Frame& frame) {
+    auto& inputs = runner_.inputs();
+    const auto size = inputs.size();
+    if (frame.width != size.width || frame.height != size.height)
+        throw Error(ErrorKind::InvalidArgument, "frame " + std::to_string(frame.index) + " is " +
+                                                    std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                                                    ", the sequence started at " + std::to_string(size.width) + "x" +
+                                                    std::to_string(size.height));
+    for (auto c : inputs.channels()) {
+        const auto tc = tracerChannel(c);
+        if (!frame.has(tc))
+            throw Error(ErrorKind::NotFound, "frame " + std::to_string(frame.index) + " has no '" +
+                                                 std::string(passes::inputChannelInfo(c).name) +
+                                                 "' layer, which chain '" + runner_.chain().name() + "' reads");
+        const auto& image = frame.get(tc);
+        inputs.upload(c, image.pixels, image.channels);
+    }
+    runner_.run();
+
+    DenoisedFrame out;
+    out.display = RgbaImage(size.width, size.height);
+    out.display.rgba = runner_.readDisplay();
+    out.radiance = RgbaImage(size.width, size.height);
+    out.radiance.rgba = runner_.readRadiance();
+    for (auto n : runner_.sanitizedCounts()) out.sanitized += n;
+    const auto& t = runner_.graph().timings();
+    if (t.valid) {
+        for (const auto& p : t.passes) passMs_[p.name].push_back(p.gpuMs);
+        frameMs_.push_back(t.totalGpuMs);
+    }
+    return out;
+}
+
+} // namespace hush::cli

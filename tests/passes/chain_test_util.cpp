@@ -1,0 +1,87 @@
+#include "chain_test_util.hpp"
+
+#include <cmath>
+
+#include <hush/passes/common/tonemap.hpp>
+#include <hush/tracer/builtin_scenes.hpp>
+#include <hush/tracer/renderer.hpp>
+
+#include "support/gpu_context.hpp"
+
+namespace hush::passes_test {
+
+const std::vector<tracer::Frame>& cornellSequence() {
+    static const std::vector<tracer::Frame> frames = [] {
+        const tracer::Renderer renderer(tracer::makeBuiltinScene("cornell"));
+        tracer::RenderSettings settings;
+        settings.width = settings.height = 64;
+        settings.referenceSpp = 256;
+        std::vector<tracer::Frame> out;
+        for (uint32_t i = 0; i < 16; ++i) {
+            settings.channels = {tracer::Channel::Color,    tracer::Channel::Direct, tracer::Channel::Indirect,
+                                 tracer::Channel::Albedo,   tracer::Channel::Normal, tracer::Channel::Position,
+                                 tracer::Channel::Depth,    tracer::Channel::Motion, tracer::Channel::MeshId};
+            if (i == 7 || i == 11 || i == 15) settings.channels.push_back(tracer::Channel::Reference);
+            out.push_back(renderer.render(i, settings));
+        }
+        return out;
+    }();
+    return frames;
+}
+
+void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame, const ChannelEdit& edit) {
+    auto& inputs = runner.inputs();
+    for (auto c : inputs.channels()) {
+        const auto channel = tracer::parseChannel(passes::inputChannelInfo(c).name);
+        REQUIRE(channel);
+        const auto& image = frame.get(*channel);
+        if (!edit) {
+            inputs.upload(c, image.pixels, image.channels);
+            continue;
+        }
+        std::vector<float> pixels = image.pixels;
+        edit(c, pixels, image.channels);
+        inputs.upload(c, pixels, image.channels);
+    }
+}
+
+std::vector<std::vector<float>> runSequence(std::unique_ptr<passes::Chain> chain,
+                                            const std::vector<tracer::Frame>& frames,
+                                            const std::function<ChannelEdit(size_t)>& edits) {
+    passes::ChainRunner runner(test::gpu().device, std::move(chain), {frames[0].width, frames[0].height});
+    std::vector<std::vector<float>> displays;
+    for (size_t f = 0; f < frames.size(); ++f) {
+        uploadFrame(runner, frames[f], edits ? edits(f) : ChannelEdit{});
+        runner.run();
+        displays.push_back(runner.readDisplay());
+    }
+    return displays;
+}
+
+std::vector<float> tonemappedRgba(const tracer::Image& hdr) {
+    std::vector<float> out(size_t(hdr.width) * hdr.height * 4, 1.0f);
+    const passes::TonemapSettings settings;
+    for (size_t i = 0; i < size_t(hdr.width) * hdr.height; ++i) {
+        for (size_t c = 0; c < 3; ++c) out[i * 4 + c] = hdr.pixels[i * hdr.channels + c];
+        passes::tonemapRgb(settings, &out[i * 4]);
+    }
+    return out;
+}
+
+double relativeL1(const std::vector<float>& a, const std::vector<float>& b) {
+    double diff = 0.0, norm = 0.0;
+    for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
+        if (i % 4 == 3) continue;
+        diff += std::fabs(double(a[i]) - double(b[i]));
+        norm += std::fabs(double(b[i]));
+    }
+    return norm > 0.0 ? diff / norm : diff;
+}
+
+size_t nonFinite(const std::vector<float>& values) {
+    size_t n = 0;
+    for (float v : values) n += std::isfinite(v) ? 0 : 1;
+    return n;
+}
+
+} // namespace hush::passes_test

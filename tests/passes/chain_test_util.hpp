@@ -1,0 +1,34 @@
+#pragma once
+// Shared pieces of the chain tests: a small tracer sequence rendered once per test
+// process, feeding a ChainRunner from tracer frames (optionally altered), and the
+// display-space images the metrics compare.
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include <hush/passes/chain_runner.hpp>
+#include <hush/tracer/frame.hpp>
+
+namespace hush::passes_test {
+
+// The built-in cornell scene's camera path, 64x64, 16 frames, 1 bounce; every frame
+// has color, direct, indirect, albedo, normal, position, depth, motion and meshid;
+// frames 7, 11 and 15 a 256-spp reference. Rendered on first use.
+const std::vector<tracer::Frame>& cornellSequence();
+
+// Called with each channel's pixels before upload, to inject faults.
+using ChannelEdit = std::function<void(passes::InputChannel, std::vector<float>& pixels, uint32_t components)>;
+void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame, const ChannelEdit& edit = {});
+
+// Runs `chain` over `frames`, returning each frame's display image (RGBA).
+std::vector<std::vector<float>> runSequence(std::unique_ptr<passes::Chain> chain,
+                                            const std::vector<tracer::Frame>& frames,
+                                            const std::function<ChannelEdit(size_t frame)>& edits = {});
+
+// A tracer image (3 channels) tonemapped with the default TonemapSettings, as RGBA.
+std::vector<float> tonemappedRgba(const tracer::Image& hdr);
+// Mean |a - b| over RGB, divided by the mean |b| (0 when b is black).
+double relativeL1(const std::vector<float>& a, const std::vector<float>& b);
+size_t nonFinite(const std::vector<float>& values);
+
+} // namespace hush::passes_test

@@ -1,0 +1,135 @@
+// Chain files (docs/passes/chain-files.md): valid files build chains that match the
+// built-in ones; invalid ones fail with errors naming the file, the JSON path and
+// the problem.
+#include <catch2/catch.hpp>
+
+#include <hush/passes/chain_file.hpp>
+#include <hush/passes/eaw/chain.hpp>
+#include <hush/passes/svgf/chain.hpp>
+
+#include "chain_test_util.hpp"
+#include "support/gpu_context.hpp"
+
+using namespace hush;
+using namespace hush::passes_test;
+
+namespace {
+
+// EAW written out node by node: must reproduce EawChain exactly.
+constexpr const char* kEawByNodes = R"({
+  // comments are allowed
+  "name": "eaw-by-nodes",
+  "nodes": [
+    {"id": "demod", "node": "demodulate", "inputs": {"radiance": "input.color", "albedo": "input.albedo"}},
+    {"id": "filter", "node": "eaw.atrous",
+     "inputs": {"color": "demod", "normal": "input.normal", "position": "input.position"}},
+    {"id": "remod", "node": "remodulate", "inputs": {"a": "filter.filtered", "albedo": "input.albedo"}},
+    {"id": "tm", "node": "tonemap", "inputs": {"radiance": "remod"}}
+  ],
+  "outputs": {"display": "tm", "radiance": "remod"}
+})";
+
+std::string errorOf(const std::string& json) {
+    auto error = test::errorFrom([&] { passes::parseChainJson(json, "chain.json"); });
+    return error ? std::string(error->what()) : std::string("(no error)");
+}
+
+} // namespace
+
+TEST_CASE("a chain file written node by node reproduces the built-in eaw chain", "[chain][chain-file]") {
+    test::ValidationScope scope;
+    auto chain = passes::parseChainJson(kEawByNodes, "eaw.json");
+    CHECK(chain->name() == "eaw-by-nodes");
+    const auto inputs = chain->inputs();
+    CHECK(inputs == passes::EawChain().inputs());
+    const std::vector<tracer::Frame> frames(cornellSequence().begin(), cornellSequence().begin() + 2);
+    const auto fromFile = runSequence(std::move(chain), frames);
+    const auto builtin = runSequence(std::make_unique<passes::EawChain>(), frames);
+    CHECK(relativeL1(fromFile.back(), builtin.back()) == 0.0);
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("a chain file based on svgf applies its settings", "[chain][chain-file]") {
+    test::ValidationScope scope;
+    auto same = passes::parseChainJson(R"({"base": "svgf"})", "a.json");
+    auto fewer = passes::parseChainJson(R"({"base": "svgf", "settings": {"atrous": {"iterations": 2}}})", "b.json");
+    auto* svgf = dynamic_cast<passes::SvgfChain*>(fewer.get());
+    REQUIRE(svgf);
+    CHECK(svgf->settings().atrous.iterations == 2);
+    const std::vector<tracer::Frame> frames(cornellSequence().begin(), cornellSequence().begin() + 2);
+    const auto a = runSequence(std::move(same), frames);
+    const auto builtin = runSequence(std::make_unique<passes::SvgfChain>(), frames);
+    CHECK(relativeL1(a.back(), builtin.back()) == 0.0);
+    const auto b = runSequence(std::move(fewer), frames);
+    CHECK(relativeL1(b.back(), builtin.back()) > 0.0);
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("an svgf chain written node by node runs", "[chain][chain-file]") {
+    test::ValidationScope scope;
+    auto chain = passes::parseChainJson(R"({
+      "nodes": [
+        {"id": "surface", "node": "surface",
+         "inputs": {"normal": "input.normal", "depth": "input.depth", "meshid": "input.meshid"}},
+        {"id": "reproject", "node": "reproject", "inputs": {"motion": "input.motion", "surface": "surface"}},
+        {"id": "demod", "node": "demodulate", "inputs": {"radiance": "input.color", "albedo": "input.albedo"}},
+        {"id": "temporal", "node": "svgf.temporal", "inputs": {"illumination": "demod", "reprojection": "reproject"},
+         "settings": {"colorHistory": "atrous"}},
+        {"id": "variance", "node": "svgf.variance", "inputs": {"temporal": "temporal", "surface": "surface"}},
+        {"id": "atrous", "node": "svgf.atrous", "inputs": {"illum_variance": "variance", "surface": "surface"}},
+        {"id": "remod", "node": "remodulate", "inputs": {"a": "atrous", "albedo": "input.albedo"}},
+        {"id": "tm", "node": "tonemap", "inputs": {"radiance": "remod"}},
+        {"id": "taa", "node": "taa", "inputs": {"color": "tm", "motion": "input.motion"}}
+      ],
+      "outputs": {"display": "taa", "radiance": "remod"}
+    })", "svgf-nodes.json");
+    const std::vector<tracer::Frame> frames(cornellSequence().begin(), cornellSequence().begin() + 3);
+    const auto out = runSequence(std::move(chain), frames);
+    CHECK(nonFinite(out.back()) == 0);
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("chain file errors name the file, the field and the problem", "[chain][chain-file]") {
+    using Catch::Contains;
+    CHECK_THAT(errorOf(R"({"base": "svgf", "settings": {"atrous": {"iterashuns": 2}}})"),
+               Contains("chain.json: settings.atrous.iterashuns: unknown field") && Contains("'iterations'"));
+    CHECK_THAT(errorOf(R"({"base": "svgf", "settings": {"atrous": {"iterations": -1}}})"),
+               Contains("settings.atrous.iterations") && Contains("integer"));
+    CHECK_THAT(errorOf(R"({"base": "bmfr9"})"), Contains("unknown chain 'bmfr9'"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "a", "node": "blur"}], "outputs": {"display": "a"}})"),
+               Contains("nodes[0].node: unknown node type 'blur'") && Contains("svgf.atrous"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap", "inputs": {"radiance": "input.colour"}}],
+                          "outputs": {"display": "t"}})"),
+               Contains("nodes[0].inputs.radiance") && Contains("'input.colour' names no input channel"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap", "inputs": {"radiance": "later"}},
+                                     {"id": "later", "node": "tonemap", "inputs": {"radiance": "input.color"}}],
+                          "outputs": {"display": "t"}})"),
+               Contains("defined after this one"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap", "inputs": {"radiance": "input.color", "hdr": "x"}}],
+                          "outputs": {"display": "t"}})"),
+               Contains("nodes[0].inputs.hdr: unknown field") && Contains("'radiance'"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap"}], "outputs": {"display": "t"}})"),
+               Contains("input 'radiance' of node 't' (tonemap) is not connected"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "s", "node": "surface", "inputs": {"normal": "input.normal",
+                          "depth": "input.depth", "meshid": "input.meshid"}},
+                          {"id": "t", "node": "tonemap", "inputs": {"radiance": "s"}}], "outputs": {"display": "t"}})"),
+               Contains("nodes[1].inputs.radiance") && Contains("takes a texture"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap", "inputs": {"radiance": "input.color"}}],
+                          "outputs": {"display": "t.colour"}})"),
+               Contains("has no output 'colour'"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap", "inputs": {"radiance": "input.color"}}]})"),
+               Contains("missing 'outputs'"));
+    CHECK_THAT(errorOf("{\n  \"base\": \"svgf\",\n  \"settings\": {\n}"), Contains("chain.json:4:"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "a", "node": "tonemap", "inputs": {"radiance": "input.color"}},
+                                     {"id": "a", "node": "tonemap", "inputs": {"radiance": "input.color"}}],
+                          "outputs": {"display": "a"}})"),
+               Contains("nodes[1].id: 'a' is already used"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "d", "node": "demodulate", "inputs": {"radiance": "input.color", "albedo": "input.albedo"}},
+                                     {"id": "t", "node": "svgf.temporal", "inputs": {"illumination": "d", "reprojection": "d"},
+                                      "settings": {"colorHistory": "d"}}],
+                          "outputs": {"display": "d"}})"),
+               Contains("colorHistory: 'd' is not an svgf.atrous node"));
+    auto missing = test::errorFrom([] { passes::makeChain("no/such/chain.json"); });
+    REQUIRE(missing);
+    CHECK_THAT(missing->what(), Contains("'no/such/chain.json' is neither a built-in chain"));
+}

@@ -1,0 +1,63 @@
+#include <hush/passes/eaw/atrous.hpp>
+
+#include <cmath>
+
+namespace hush::passes {
+
+namespace {
+// Matches the push-constant block of shaders/eaw/atrous.comp.
+struct EawParams {
+    int32_t step;
+    float sigmaRt2, sigmaN2, sigmaX2;
+};
+
+// sigma^2, floored so that the shader's division is never 0/0 (see the header).
+float guardedSquare(float sigma) {
+    constexpr float kMinSigmaSquared = 1e-30f;
+    const float squared = sigma * sigma;
+    return squared > kMinSigmaSquared ? squared : kMinSigmaSquared;
+}
+} // namespace
+
+uint32_t eawAtrousStep(uint32_t level) {
+    constexpr uint32_t kMaxLevel = 16;
+    return 1u << (level < kMaxLevel ? level : kMaxLevel);
+}
+
+float eawColorSigma(const EawSettings& s, uint32_t level) {
+    return std::ldexp(s.sigmaRt, -int(level < 200 ? level : 200));
+}
+
+graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
+                                      graph::TextureHandle normal, graph::TextureHandle position, uint32_t level,
+                                      const EawSettings& s) {
+    const rhi::ComputePipeline pipeline = ctx.pipelines.get("eaw/atrous");
+    graph::TextureHandle result;
+    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
+        auto c = b.sample("color", color);
+        auto n = b.sample("normal", normal);
+        auto x = b.sample("position", position);
+        auto out = b.write("filtered", b.create(name, fullSize()));
+        auto group = b.bindGroup(pipeline, 0,
+                                 {{.name = "color", .texture = c},
+                                  {.name = "normal", .texture = n},
+                                  {.name = "position", .texture = x},
+                                  {.name = "filtered", .texture = out}});
+        result = out;
+        const EawParams params{int32_t(eawAtrousStep(level)), guardedSquare(eawColorSigma(s, level)),
+                               guardedSquare(s.sigmaN), guardedSquare(s.sigmaX)};
+        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(out).size(), params); };
+    });
+    return result;
+}
+
+graph::TextureHandle addEawAtrousLevels(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
+                                        graph::TextureHandle normal, graph::TextureHandle position,
+                                        const EawSettings& s) {
+    graph::TextureHandle current = color;
+    for (uint32_t i = 0; i < s.iterations; ++i)
+        current = addEawAtrousPass(ctx, name + ".level." + std::to_string(i), current, normal, position, i, s);
+    return current;
+}
+
+} // namespace hush::passes

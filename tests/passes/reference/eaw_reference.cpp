@@ -1,0 +1,83 @@
+#include "reference/eaw_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace hush::passes_test::reference {
+
+namespace {
+
+double b3(int offset) {
+    const double h[5] = {1.0 / 16.0, 1.0 / 4.0, 3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0};
+    return h[offset + 2];
+}
+
+double squaredDistance(const FloatImage& image, uint32_t px, uint32_t py, uint32_t qx, uint32_t qy) {
+    double sum = 0.0;
+    for (uint32_t c = 0; c < 3; ++c) {
+        const double d = double(image.at(px, py, c)) - double(image.at(qx, qy, c));
+        sum += d * d;
+    }
+    return sum;
+}
+
+bool hasSurface(const FloatImage& normal, uint32_t x, uint32_t y) {
+    double n2 = 0.0;
+    for (uint32_t c = 0; c < 3; ++c) n2 += double(normal.at(x, y, c)) * normal.at(x, y, c);
+    return n2 > 1e-6;
+}
+
+// exp(-d^2 / sigma^2), sigma^2 floored at 1e-30 as the node does.
+double edgeStop(double squaredDist, double sigma) {
+    return std::exp(-squaredDist / std::max(sigma * sigma, 1e-30));
+}
+
+} // namespace
+
+FloatImage eawAtrousLevel(const FloatImage& color, const FloatImage& normal, const FloatImage& position,
+                          uint32_t level, const passes::EawSettings& s) {
+    FloatImage out(color.width, color.height, 4);
+    const int64_t step = int64_t(1) << std::min(level, 40u);
+    // Dammertz et al. 2010: the colour sigma halves at every level.
+    const double sigmaRt = double(s.sigmaRt) * std::pow(2.0, -double(level));
+    for (uint32_t y = 0; y < color.height; ++y)
+        for (uint32_t x = 0; x < color.width; ++x) {
+            out.at(x, y, 3) = color.channels > 3 ? color.at(x, y, 3) : 1.0f;
+            if (!hasSurface(normal, x, y)) {
+                for (uint32_t c = 0; c < 3; ++c) out.at(x, y, c) = color.at(x, y, c);
+                continue;
+            }
+            double sum[3] = {0.0, 0.0, 0.0}, weightSum = 0.0;
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) {
+                    const int64_t qx64 = int64_t(x) + dx * step, qy64 = int64_t(y) + dy * step;
+                    if (qx64 < 0 || qy64 < 0 || qx64 >= int64_t(color.width) || qy64 >= int64_t(color.height))
+                        continue;
+                    const auto qx = uint32_t(qx64), qy = uint32_t(qy64);
+                    if (!hasSurface(normal, qx, qy)) continue;   // never the centre: it has one
+                    const double w = edgeStop(squaredDistance(color, x, y, qx, qy), sigmaRt) *
+                                     edgeStop(squaredDistance(normal, x, y, qx, qy), double(s.sigmaN)) *
+                                     edgeStop(squaredDistance(position, x, y, qx, qy), double(s.sigmaX));
+                    const double hw = b3(dx) * b3(dy) * w;
+                    for (uint32_t c = 0; c < 3; ++c) sum[c] += hw * color.at(qx, qy, c);
+                    weightSum += hw;
+                }
+            for (uint32_t c = 0; c < 3; ++c) out.at(x, y, c) = float(sum[c] / weightSum);
+        }
+    return out;
+}
+
+std::vector<FloatImage> eawAtrousLevels(const FloatImage& color, const FloatImage& normal,
+                                        const FloatImage& position, const passes::EawSettings& s) {
+    std::vector<FloatImage> levels;
+    levels.reserve(s.iterations);   // `current` points into it
+    const FloatImage* current = &color;
+    for (uint32_t i = 0; i < s.iterations; ++i) {
+        levels.push_back(eawAtrousLevel(*current, normal, position, i, s));
+        current = &levels.back();
+    }
+    return levels;
+}
+
+} // namespace hush::passes_test::reference

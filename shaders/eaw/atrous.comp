@@ -13,12 +13,14 @@ layout(set = 0, binding = 0) uniform texture2D color;      // rgb filtered, a co
 layout(set = 0, binding = 1) uniform texture2D normal;     // xyz, 0 where no surface
 layout(set = 0, binding = 2) uniform texture2D position;   // world xyz
 layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D filtered;
+layout(set = 0, binding = 4) uniform texture2D depth;      // linear depth (read when depthRelative)
 
 layout(push_constant) uniform Params {
     int step;          // 2^level, capped so that offsets stay in int range
     float sigmaRt2;    // (2^-level sigma_rt)^2, >= 1e-30
     float sigmaN2;     // >= 1e-30
     float sigmaX2;     // >= 1e-30
+    uint depthRelative;   // 1: position distances are divided by the centre's depth
 } params;
 
 const float kKernel[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
@@ -45,6 +47,13 @@ void main() {
         return;
     }
     vec3 xP = texelFetch(position, p, 0).xyz;
+    // Scale-free position weight: ||x_p - x_q|| / z_p, so that one sigma suits a scene
+    // modelled in millimetres and one in metres (docs/passes/eaw.md).
+    float xScale2 = 1.0;
+    if (params.depthRelative != 0u) {
+        float z = max(abs(texelFetch(depth, p, 0).x), 1e-20);
+        xScale2 = z * z;
+    }
 
     vec3 colourSum = vec3(0.0);
     float weightSum = 0.0;
@@ -65,7 +74,7 @@ void main() {
                 // w_rt w_n w_x as one exponential of the summed exponents.
                 w = exp(-(squaredDistance(centre.rgb, c) / params.sigmaRt2 +
                           squaredDistance(nP, nQ) / params.sigmaN2 +
-                          squaredDistance(xP, xQ) / params.sigmaX2));
+                          squaredDistance(xP, xQ) / (params.sigmaX2 * xScale2)));
             }
             float hw = kKernel[abs(dx)] * kKernel[abs(dy)] * w;
             colourSum += hw * c;

@@ -22,7 +22,7 @@ constexpr const char* kEawByNodes = R"({
   "nodes": [
     {"id": "demod", "node": "demodulate", "inputs": {"radiance": "input.color", "albedo": "input.albedo"}},
     {"id": "filter", "node": "eaw.atrous",
-     "inputs": {"color": "demod", "normal": "input.normal", "position": "input.position"}},
+     "inputs": {"color": "demod", "normal": "input.normal", "position": "input.position", "depth": "input.depth"}},
     {"id": "remod", "node": "remodulate", "inputs": {"a": "filter.filtered", "albedo": "input.albedo"}},
     {"id": "tm", "node": "tonemap", "inputs": {"radiance": "remod"}}
   ],

@@ -244,3 +244,37 @@ TEST_CASE("eaw a-trous: extreme values and zero sigmas stay finite and match the
     }
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
+
+TEST_CASE("eaw with a depth input compares positions relative to the centre's depth", "[eaw]") {
+    test::ValidationScope scope;
+    const uint32_t w = 24, h = 17;
+    // The same picture at two scales (metres and millimetres): the filtered colour must match.
+    auto color = randomImage(w, h, 4, 0.0f, 2.0f, 41);
+    auto normal = makeImage(w, h, 3, [](uint32_t x, uint32_t, uint32_t c) { return c == 2 ? 1.0f : (x > 15 && c == 0 ? 0.2f : 0.0f); });
+    auto position = makeImage(w, h, 3, [](uint32_t x, uint32_t y, uint32_t c) {
+        return c == 0 ? 0.01f * float(x) : c == 1 ? 0.01f * float(y) : (x > 11 ? -3.0f : -2.0f);
+    });
+    auto depth = makeImage(w, h, 1, [](uint32_t x, uint32_t, uint32_t) { return x > 11 ? 3.0f : 2.0f; });
+    FloatImage positionMm = position, depthMm = depth;
+    for (auto& v : positionMm.pixels) v *= 1000.0f;
+    for (auto& v : depthMm.pixels) v *= 1000.0f;
+    passes::EawSettings s;
+    for (uint32_t level : {0u, 2u}) {
+        NodeHarness t({w, h});
+        auto c = t.input("color", color);
+        auto n = t.input("normal", normal);
+        auto m = passes::addEawAtrousPass(t.ctx, "metres", c, n, t.input("position", position),
+                                          t.input("depth", depth, Format::R32Float), level, s);
+        auto mm = passes::addEawAtrousPass(t.ctx, "millimetres", c, n, t.input("position_mm", positionMm),
+                                           t.input("depth_mm", depthMm, Format::R32Float), level, s);
+        t.graph.markOutput(mm);
+        const auto gpu = t.runOnce(m);
+        const auto gpuMm = readOutput(t.graph, mm);
+        const auto ref = reference::eawAtrousLevel(color, normal, position, level, s, &depth);
+        INFO("level " << level);
+        // As the other single-level comparisons.
+        HUSH_REQUIRE_IMAGES_MATCH(gpu, ref, 2e-6f, 2e-6f, 3);
+        HUSH_REQUIRE_IMAGES_MATCH(gpuMm, gpu, 2e-6f, 2e-6f, 3);
+    }
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}

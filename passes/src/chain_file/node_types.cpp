@@ -105,11 +105,13 @@ std::vector<NodeType> makeNodeTypes() {
                                                   std::any_cast<const SvgfAtrousSettings&>(b.settings));
                      return {r.filtered, r.firstLevel};
                  }});
-    t.push_back({"eaw.atrous", "Dammertz et al. 2010 edge-avoiding a-trous levels, global parameters",
-                 {{"color"}, {"normal"}, {"position"}}, {{"filtered"}}, settingsOf<EawSettings>(),
+    t.push_back({"eaw.atrous", "Dammertz et al. 2010 edge-avoiding a-trous levels, global parameters; with depth, the position "
+                               "weight is relative to depth",
+                 {{"color"}, {"normal"}, {"position"}, {"depth", K::Texture, true}}, {{"filtered"}},
+                 settingsOf<EawSettings>(),
                  [](const NodeBuild& b) -> std::vector<Value> {
                      return {addEawAtrousLevels(b.ctx, b.name, texture(b, 0), texture(b, 1), texture(b, 2),
-                                                std::any_cast<const EawSettings&>(b.settings))};
+                                                texture(b, 3), std::any_cast<const EawSettings&>(b.settings))};
                  }});
     t.push_back({"tonemap", "HDR radiance to display values in [0, 1] (common/tonemap.hpp)", {{"radiance"}},
                  {{"display"}}, settingsOf<TonemapSettings>(),

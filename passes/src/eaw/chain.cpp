@@ -3,7 +3,8 @@
 namespace hush::passes {
 
 std::vector<InputChannel> EawChain::inputs() const {
-    return {InputChannel::Color, InputChannel::Albedo, InputChannel::Normal, InputChannel::Position};
+    return {InputChannel::Color, InputChannel::Albedo, InputChannel::Normal, InputChannel::Position,
+            InputChannel::Depth};
 }
 
 ChainOutputs EawChain::build(NodeContext& ctx, const DenoiseInputs& raw) {
@@ -11,8 +12,9 @@ ChainOutputs EawChain::build(NodeContext& ctx, const DenoiseInputs& raw) {
     const auto& in = s.inputs;
     auto illumination =
         addDemodulatePass(ctx, "eaw.demodulate", in[InputChannel::Color], in[InputChannel::Albedo], settings_.demodulate);
+    // Depth makes the position weight scale-free (docs/passes/eaw.md).
     auto filtered = addEawAtrousLevels(ctx, "eaw.atrous", illumination, in[InputChannel::Normal],
-                                       in[InputChannel::Position], settings_.atrous);
+                                       in[InputChannel::Position], in[InputChannel::Depth], settings_.atrous);
     auto radiance = addRemodulatePass(ctx, "eaw.remodulate", filtered, {}, in[InputChannel::Albedo], settings_.demodulate);
     auto display = addTonemapPass(ctx, "eaw.tonemap", radiance, settings_.tonemap);
     ctx.graph.markOutput(radiance);

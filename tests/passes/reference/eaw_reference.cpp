@@ -36,7 +36,7 @@ double edgeStop(double squaredDist, double sigma) {
 } // namespace
 
 FloatImage eawAtrousLevel(const FloatImage& color, const FloatImage& normal, const FloatImage& position,
-                          uint32_t level, const passes::EawSettings& s) {
+                          uint32_t level, const passes::EawSettings& s, const FloatImage* depth) {
     FloatImage out(color.width, color.height, 4);
     const int64_t step = int64_t(1) << std::min(level, 40u);
     // Dammertz et al. 2010: the colour sigma halves at every level.
@@ -48,6 +48,9 @@ FloatImage eawAtrousLevel(const FloatImage& color, const FloatImage& normal, con
                 for (uint32_t c = 0; c < 3; ++c) out.at(x, y, c) = color.at(x, y, c);
                 continue;
             }
+            // With depth: ||x_p - x_q|| / z_p against sigmaXRelative.
+            const double zP = depth ? std::max(std::fabs(double(depth->at(x, y))), 1e-20) : 1.0;
+            const double sigmaX = depth ? double(s.sigmaXRelative) * zP : double(s.sigmaX);
             double sum[3] = {0.0, 0.0, 0.0}, weightSum = 0.0;
             for (int dy = -2; dy <= 2; ++dy)
                 for (int dx = -2; dx <= 2; ++dx) {
@@ -58,7 +61,7 @@ FloatImage eawAtrousLevel(const FloatImage& color, const FloatImage& normal, con
                     if (!hasSurface(normal, qx, qy)) continue;   // never the centre: it has one
                     const double w = edgeStop(squaredDistance(color, x, y, qx, qy), sigmaRt) *
                                      edgeStop(squaredDistance(normal, x, y, qx, qy), double(s.sigmaN)) *
-                                     edgeStop(squaredDistance(position, x, y, qx, qy), double(s.sigmaX));
+                                     edgeStop(squaredDistance(position, x, y, qx, qy), sigmaX);
                     const double hw = b3(dx) * b3(dy) * w;
                     for (uint32_t c = 0; c < 3; ++c) sum[c] += hw * color.at(qx, qy, c);
                     weightSum += hw;

@@ -13,8 +13,10 @@ namespace hush::passes_test::reference {
 
 // 4 channels: rgb filtered, alpha the centre's. color and position: >= 3 channels,
 // normal: >= 3 channels.
+// With `depth` (1 channel, linear), positions compare relative to the centre's depth
+// against sigmaXRelative.
 FloatImage eawAtrousLevel(const FloatImage& color, const FloatImage& normal, const FloatImage& position,
-                          uint32_t level, const passes::EawSettings& s = {});
+                          uint32_t level, const passes::EawSettings& s = {}, const FloatImage* depth = nullptr);
 
 // Every level's output, level i filtering level i-1's.
 std::vector<FloatImage> eawAtrousLevels(const FloatImage& color, const FloatImage& normal,

@@ -35,6 +35,11 @@ struct EawSettings {
     float sigmaRt = 1.0f;      // colour, illumination units, at level 0 (halved per level)
     float sigmaN = 0.3f;       // ||n(p) - n(q)||: a 30 degree crease (0.52) weighs exp(-3)
     float sigmaX = 0.5f;       // world units: a 1 m depth step weighs exp(-4)
+    // With a depth input, positions are compared relative to the centre's depth,
+    // ||x_p - x_q|| / z_p, with this sigma instead of sigmaX: scale-free, so one value
+    // suits every scene. 0.1: neighbours 16 pixels apart on one surface (about 0.05 z
+    // at a 40 degree field of view and 256 pixels) weigh 0.8; a step of z/4 weighs exp(-6).
+    float sigmaXRelative = 0.1f;
 };
 
 // The a-trous step of `level`: 2^level, capped at 2^16 (every tap but the centre
@@ -53,5 +58,14 @@ graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name,
 graph::TextureHandle addEawAtrousLevels(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
                                         graph::TextureHandle normal, graph::TextureHandle position,
                                         const EawSettings& s = {});
+
+// The same with a linear depth input: the position weight becomes scale-free,
+// exp(-||x_p - x_q||^2 / (sigmaXRelative z_p)^2), z_p at least 1e-20.
+graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
+                                      graph::TextureHandle normal, graph::TextureHandle position,
+                                      graph::TextureHandle depth, uint32_t level, const EawSettings& s = {});
+graph::TextureHandle addEawAtrousLevels(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
+                                        graph::TextureHandle normal, graph::TextureHandle position,
+                                        graph::TextureHandle depth, const EawSettings& s = {});
 
 } // namespace hush::passes

@@ -16,6 +16,7 @@ constexpr InputChannelInfo kChannels[kInputChannelCount] = {
     {InputChannel::Motion, "motion", Format::RG32Float, 2},
     {InputChannel::Roughness, "roughness", Format::R32Float, 1},
     {InputChannel::MeshId, "meshid", Format::R32Float, 1},
+    {InputChannel::Emission, "emission", Format::RGBA32Float, 3},
 };
 } // namespace
 

@@ -58,7 +58,8 @@ int runDemo(std::span<const std::string_view> args) {
     settings.referenceSpp = DemoDefaults::referenceSpp;
     settings.channels = {tracer::Channel::Color,  tracer::Channel::Direct, tracer::Channel::Indirect,
                          tracer::Channel::Albedo, tracer::Channel::Normal, tracer::Channel::Position,
-                         tracer::Channel::Depth,  tracer::Channel::Motion, tracer::Channel::MeshId};
+                         tracer::Channel::Depth,  tracer::Channel::Motion, tracer::Channel::MeshId,
+                         tracer::Channel::Emission};
     rhi::AdapterRequest request;
     bool reuse = false;
     for (size_t i = 0; i < args.size(); ++i) {

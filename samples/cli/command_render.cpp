@@ -32,8 +32,9 @@ const std::string& usage() {
         "  --size <W>x<H>         image size (default 256x256)\n"
         "  --reference-spp <n>    samples per pixel of the reference (default 1024; 0: none)\n"
         "  --reference-every <k>  a reference on every k-th frame only (default 1)\n"
-        "  --channels <list>      comma-separated channels, or 'all' (default: color, albedo,\n"
-        "                         normal, position, depth, motion, meshid, roughness, specular);\n"
+        "  --channels <list>      comma-separated channels, or 'all' (default: color, direct,\n"
+        "                         indirect, emission, albedo, normal, position, depth, motion,\n"
+        "                         meshid, roughness, specular: what the svgf and eaw chains read);\n"
         "                         matte or glossy switch on Mara et al.'s factored terms\n"
         "  --bounces <n>          indirect bounces after the primary hit (default 1)\n"
         "  --seed <n>             sampling seed (default 1); same seed, same frames\n"
@@ -49,7 +50,8 @@ int runRender(std::span<const std::string_view> args) {
     tracer::RenderSettings settings;
     settings.channels = {tracer::Channel::Color,  tracer::Channel::Albedo,   tracer::Channel::Normal,
                          tracer::Channel::Position, tracer::Channel::Depth,  tracer::Channel::Motion,
-                         tracer::Channel::MeshId, tracer::Channel::Roughness, tracer::Channel::Specular};
+                         tracer::Channel::MeshId, tracer::Channel::Roughness, tracer::Channel::Specular,
+                         tracer::Channel::Direct, tracer::Channel::Indirect, tracer::Channel::Emission};
     for (size_t i = 0; i < args.size(); ++i) {
         std::string v;
         if (takeOption(args, i, "--scene", v)) sceneName = v;

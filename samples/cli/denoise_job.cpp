@@ -30,7 +30,7 @@ namespace {
 RgbaImage tonemapped(const RgbaImage& hdr) {
     RgbaImage out = hdr;
     const passes::TonemapSettings settings;
-    for (size_t i = 0; i < size_t(out.width) * out.height; ++i) passes::tonemapRgb(settings, &out.rgba[i * 4]);
+    for (size_t i = 0; i < size_t(out.width) * out.height; ++i) passes::tonemap(settings, &out.rgba[i * 4]);
     return out;
 }
 

@@ -24,6 +24,12 @@ DenoisedFrame DenoiseRun::process(const tracer::Frame& frame) {
                                                     std::to_string(size.height));
     for (auto c : inputs.channels()) {
         const auto tc = tracerChannel(c);
+        if (c == passes::InputChannel::Emission && !frame.has(tc)) {
+            // A renderer that does not split off emission: none to take out.
+            zeros_.assign(size_t(size.width) * size.height * 3, 0.0f);
+            inputs.upload(c, zeros_, 3);
+            continue;
+        }
         if (!frame.has(tc))
             throw Error(ErrorKind::NotFound, "frame " + std::to_string(frame.index) + " has no '" +
                                                  std::string(passes::inputChannelInfo(c).name) +

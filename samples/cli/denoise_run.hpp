@@ -24,7 +24,7 @@ public:
     DenoiseRun(rhi::Device device, std::unique_ptr<passes::Chain> chain, rhi::Extent2D size);
 
     // Throws hush::Error naming the frame and channel when a frame lacks a channel
-    // the chain reads, or has another size.
+    // the chain reads, or has another size. A frame without 'emission' has none.
     DenoisedFrame process(const tracer::Frame& frame);
 
     const passes::Chain& chain() const { return runner_.chain(); }
@@ -39,6 +39,7 @@ private:
     std::vector<std::string> passNames_;
     std::map<std::string, std::vector<double>> passMs_;
     std::vector<double> frameMs_;
+    std::vector<float> zeros_;
 };
 
 // The frame's channel named like `channel` (the layer names are the same).

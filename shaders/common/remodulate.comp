@@ -1,8 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
-// radiance = sum of the filtered illumination terms * demodulationFactor(albedo): the
-// inverse of common/demodulate.comp, over one or two terms (direct + indirect).
+// radiance = sum of the filtered illumination terms * demodulationFactor(albedo)
+// + emission: the inverse of common/demodulate.comp, over one or two terms.
 #include "common/grid.glsl"
 #include "common/demodulation.glsl"
 
@@ -12,10 +12,12 @@ layout(set = 0, binding = 0) uniform texture2D illuminationA;
 layout(set = 0, binding = 1) uniform texture2D illuminationB;
 layout(set = 0, binding = 2) uniform texture2D albedo;
 layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D radiance;
+layout(set = 0, binding = 4) uniform texture2D emission;   // read when hasEmission
 
 layout(push_constant) uniform Params {
     float eps;
     uint termCount;   // 1: illuminationB is not read
+    uint hasEmission;
 } params;
 
 void main() {
@@ -28,5 +30,9 @@ void main() {
         sum += texelFetch(illuminationB, p, 0).rgb;
     }
     vec3 factor = demodulationFactor(texelFetch(albedo, p, 0).rgb, params.eps);
-    imageStore(radiance, p, vec4(sum * factor, 1.0));
+    vec3 result = sum * factor;
+    if (params.hasEmission != 0u) {
+        result += texelFetch(emission, p, 0).rgb;
+    }
+    imageStore(radiance, p, vec4(result, 1.0));
 }

@@ -14,13 +14,14 @@ const std::vector<tracer::Frame>& cornellSequence() {
     static const std::vector<tracer::Frame> frames = [] {
         const tracer::Renderer renderer(tracer::makeBuiltinScene("cornell"));
         tracer::RenderSettings settings;
-        settings.width = settings.height = 64;
+        settings.width = settings.height = 96;
         settings.referenceSpp = 256;
         std::vector<tracer::Frame> out;
         for (uint32_t i = 0; i < 16; ++i) {
             settings.channels = {tracer::Channel::Color,    tracer::Channel::Direct, tracer::Channel::Indirect,
                                  tracer::Channel::Albedo,   tracer::Channel::Normal, tracer::Channel::Position,
-                                 tracer::Channel::Depth,    tracer::Channel::Motion, tracer::Channel::MeshId};
+                                 tracer::Channel::Depth,    tracer::Channel::Motion, tracer::Channel::MeshId,
+                                 tracer::Channel::Emission};
             if (i == 7 || i == 11 || i == 15) settings.channels.push_back(tracer::Channel::Reference);
             out.push_back(renderer.render(i, settings));
         }
@@ -63,7 +64,7 @@ std::vector<float> tonemappedRgba(const tracer::Image& hdr) {
     const passes::TonemapSettings settings;
     for (size_t i = 0; i < size_t(hdr.width) * hdr.height; ++i) {
         for (size_t c = 0; c < 3; ++c) out[i * 4 + c] = hdr.pixels[i * hdr.channels + c];
-        passes::tonemapRgb(settings, &out[i * 4]);
+        passes::tonemap(settings, &out[i * 4]);
     }
     return out;
 }

@@ -11,7 +11,7 @@
 
 namespace hush::passes_test {
 
-// The built-in cornell scene's camera path, 64x64, 16 frames, 1 bounce; every frame
+// The built-in cornell scene's camera path, 96x96, 16 frames, 1 bounce; every frame
 // has color, direct, indirect, albedo, normal, position, depth, motion and meshid;
 // frames 7, 11 and 15 a 256-spp reference. Rendered on first use.
 const std::vector<tracer::Frame>& cornellSequence();

@@ -20,10 +20,12 @@ constexpr const char* kEawByNodes = R"({
   // comments are allowed
   "name": "eaw-by-nodes",
   "nodes": [
-    {"id": "demod", "node": "demodulate", "inputs": {"radiance": "input.color", "albedo": "input.albedo"}},
+    {"id": "demod", "node": "demodulate",
+     "inputs": {"radiance": "input.color", "albedo": "input.albedo", "emission": "input.emission"}},
     {"id": "filter", "node": "eaw.atrous",
      "inputs": {"color": "demod", "normal": "input.normal", "position": "input.position", "depth": "input.depth"}},
-    {"id": "remod", "node": "remodulate", "inputs": {"a": "filter.filtered", "albedo": "input.albedo"}},
+    {"id": "remod", "node": "remodulate",
+     "inputs": {"a": "filter.filtered", "albedo": "input.albedo", "emission": "input.emission"}},
     {"id": "tm", "node": "tonemap", "inputs": {"radiance": "remod"}}
   ],
   "outputs": {"display": "tm", "radiance": "remod"}

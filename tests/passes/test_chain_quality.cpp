@@ -1,4 +1,4 @@
-// The chains on a tracer sequence (the cornell box's camera path, 64x64, 16 frames):
+// The chains on a tracer sequence (the cornell box's camera path, 96x96, 16 frames):
 // SVGF must beat the noisy input and the EAW baseline on SSIM against the reference,
 // and its temporal error must be below EAW's and at least 5x below the input's
 // (SVGF Sec. 5: about 10x lower temporal error than prior interactive filters).
@@ -52,7 +52,7 @@ TEST_CASE("svgf beats the noisy input and eaw on ssim and temporal error", "[cha
     const Score input = score(noisy, frames, metrics);
     const Score eaw = score(runSequence(std::make_unique<passes::EawChain>(), frames), frames, metrics);
     const Score svgf = score(runSequence(std::make_unique<passes::SvgfChain>(), frames), frames, metrics);
-    std::printf("quality 64x64 cornell, 16 frames: SSIM noisy %.4f eaw %.4f svgf %.4f | RMSE noisy %.4f eaw %.4f "
+    std::printf("quality 96x96 cornell, 16 frames: SSIM noisy %.4f eaw %.4f svgf %.4f | RMSE noisy %.4f eaw %.4f "
                 "svgf %.4f | temporal noisy %.5f eaw %.5f svgf %.5f\n",
                 input.ssim, eaw.ssim, svgf.ssim, input.rmse, eaw.rmse, svgf.rmse, input.temporal, eaw.temporal,
                 svgf.temporal);

@@ -89,6 +89,7 @@ tracer::Frame syntheticFrame(uint32_t w, uint32_t h, const std::function<float(u
     fill(tracer::Channel::Depth, [](uint32_t, uint32_t, uint32_t) { return 2.0f; });
     fill(tracer::Channel::Motion, [](uint32_t, uint32_t, uint32_t) { return 0.0f; });
     fill(tracer::Channel::MeshId, [](uint32_t, uint32_t, uint32_t) { return 0.0f; });
+    fill(tracer::Channel::Emission, [](uint32_t, uint32_t, uint32_t) { return 0.0f; });
     return f;
 }
 

@@ -22,6 +22,7 @@ const ChannelInfo& channelInfo(Channel channel) {
         {"meshid", 1, {"ID"}, PixelKind::Uint},
         {"virtualpos", 3, {"X", "Y", "Z"}, PixelKind::Float},
         {"reference", 3, {"R", "G", "B"}, PixelKind::Float},
+        {"emission", 3, {"R", "G", "B"}, PixelKind::Half},
     };
     return kInfo[size_t(channel)];
 }

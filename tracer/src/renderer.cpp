@@ -122,6 +122,9 @@ Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, cons
                 put(frame, Channel::Depth, x, y, glm::vec3(camera.viewDepth(hit.position)));
                 put(frame, Channel::Roughness, x, y, glm::vec3(m.roughness));
                 put(frame, Channel::MeshId, x, y, glm::vec3(float(hit.mesh)));
+                // Seen directly, emission is noise-free: filters add it back after filtering.
+                const bool facing = hit.frontFace || m.doubleSidedEmission;
+                put(frame, Channel::Emission, x, y, facing ? m.emission : glm::vec3(0.0f));
             } else {
                 put(frame, Channel::Depth, x, y, glm::vec3(path.farPlane));
                 put(frame, Channel::Position, x, y, camera.position + dir * path.farPlane);

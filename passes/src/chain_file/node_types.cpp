@@ -44,17 +44,19 @@ std::any noSettings(ObjectReader&) { return {}; }
 std::vector<NodeType> makeNodeTypes() {
     using K = PortKind;
     std::vector<NodeType> t;
-    t.push_back({"demodulate", "illumination = radiance / albedo (common/demodulate.hpp)",
-                 {{"radiance"}, {"albedo"}}, {{"illumination"}}, settingsOf<DemodulateSettings>(),
+    t.push_back({"demodulate", "illumination = (radiance - emission) / albedo (common/demodulate.hpp)",
+                 {{"radiance"}, {"albedo"}, {"emission", K::Texture, true}}, {{"illumination"}},
+                 settingsOf<DemodulateSettings>(),
                  [](const NodeBuild& b) -> std::vector<Value> {
                      return {addDemodulatePass(b.ctx, b.name, texture(b, 0), texture(b, 1),
-                                               std::any_cast<const DemodulateSettings&>(b.settings))};
+                                               std::any_cast<const DemodulateSettings&>(b.settings), texture(b, 2))};
                  }});
-    t.push_back({"remodulate", "radiance = (a + b) * albedo; b optional (common/demodulate.hpp)",
-                 {{"a"}, {"b", K::Texture, true}, {"albedo"}}, {{"radiance"}}, settingsOf<DemodulateSettings>(),
+    t.push_back({"remodulate", "radiance = (a + b) * albedo + emission; b and emission optional (common/demodulate.hpp)",
+                 {{"a"}, {"b", K::Texture, true}, {"albedo"}, {"emission", K::Texture, true}}, {{"radiance"}},
+                 settingsOf<DemodulateSettings>(),
                  [](const NodeBuild& b) -> std::vector<Value> {
                      return {addRemodulatePass(b.ctx, b.name, texture(b, 0), texture(b, 1), texture(b, 2),
-                                               std::any_cast<const DemodulateSettings&>(b.settings))};
+                                               std::any_cast<const DemodulateSettings&>(b.settings), texture(b, 3))};
                  }});
     t.push_back({"surface", "packs normal, depth, mesh id and the depth gradient (common/surface.hpp)",
                  {{"normal"}, {"depth"}, {"meshid"}}, {{"surface", K::Surface}}, noSettings,

@@ -24,7 +24,8 @@ SanitizeRange sanitizeRange(InputChannel channel, const SanitizeSettings& settin
     switch (channel) {
     case InputChannel::Color:
     case InputChannel::Direct:
-    case InputChannel::Indirect: return {0.0f, settings.maxRadiance, 0.0f};
+    case InputChannel::Indirect:
+    case InputChannel::Emission: return {0.0f, settings.maxRadiance, 0.0f};
     case InputChannel::Albedo:
     case InputChannel::Specular: return {0.0f, 1.0f, 0.0f};
     case InputChannel::Normal: return {-1.0f, 1.0f, 0.0f};

@@ -22,6 +22,7 @@ std::vector<InputChannel> SvgfChain::inputs() const {
     for (auto c : {InputChannel::Albedo, InputChannel::Normal, InputChannel::Depth, InputChannel::Motion,
                    InputChannel::MeshId})
         channels.push_back(c);
+    if (settings_.separateEmission) channels.push_back(InputChannel::Emission);
     return channels;
 }
 
@@ -33,10 +34,12 @@ ChainOutputs SvgfChain::build(NodeContext& ctx, const DenoiseInputs& raw) {
     const auto reprojection = addReprojectPass(ctx, "svgf.reproject", in[InputChannel::Motion], surface,
                                                surfaceHistory(ctx, "svgf.surface"), settings_.reproject);
 
-    auto filterTerm = [&](const std::string& term, InputChannel channel) {
+    // Emission (part of direct, or of colour) is taken out of that term and added back at the end.
+    const graph::TextureHandle emission = settings_.separateEmission ? in[InputChannel::Emission] : graph::TextureHandle{};
+    auto filterTerm = [&](const std::string& term, InputChannel channel, graph::TextureHandle termEmission) {
         const std::string prefix = "svgf." + term;
-        auto illumination =
-            addDemodulatePass(ctx, prefix + ".demodulate", in[channel], in[InputChannel::Albedo], settings_.demodulate);
+        auto illumination = addDemodulatePass(ctx, prefix + ".demodulate", in[channel], in[InputChannel::Albedo],
+                                              settings_.demodulate, termEmission);
         // The first a-trous level's output feeds back as the colour history (Sec. 4.1).
         const std::string atrousName = prefix + ".atrous";
         auto temporal = addSvgfTemporalPass(ctx, prefix + ".temporal", illumination, reprojection,
@@ -47,13 +50,14 @@ ChainOutputs SvgfChain::build(NodeContext& ctx, const DenoiseInputs& raw) {
 
     graph::TextureHandle radiance;
     if (settings_.splitLighting) {
-        auto direct = filterTerm("direct", InputChannel::Direct);
-        auto indirect = filterTerm("indirect", InputChannel::Indirect);
+        auto direct = filterTerm("direct", InputChannel::Direct, emission);
+        auto indirect = filterTerm("indirect", InputChannel::Indirect, {});
         radiance = addRemodulatePass(ctx, "svgf.remodulate", direct, indirect, in[InputChannel::Albedo],
-                                     settings_.demodulate);
+                                     settings_.demodulate, emission);
     } else {
-        auto color = filterTerm("color", InputChannel::Color);
-        radiance = addRemodulatePass(ctx, "svgf.remodulate", color, {}, in[InputChannel::Albedo], settings_.demodulate);
+        auto color = filterTerm("color", InputChannel::Color, emission);
+        radiance = addRemodulatePass(ctx, "svgf.remodulate", color, {}, in[InputChannel::Albedo], settings_.demodulate,
+                                     emission);
     }
     auto display = addTonemapPass(ctx, "svgf.tonemap", radiance, settings_.tonemap);
     if (settings_.useTaa) display = addTaaPass(ctx, "svgf.taa", display, in[InputChannel::Motion], settings_.taa);

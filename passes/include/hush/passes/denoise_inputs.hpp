@@ -25,8 +25,9 @@ enum class InputChannel : uint8_t {
     Motion,     // previous pixel minus current pixel
     Roughness,  // GGX alpha
     MeshId,     // float; -1 where no surface
+    Emission,   // radiance the primary hit emits (part of direct / color), noise-free
 };
-inline constexpr size_t kInputChannelCount = 11;
+inline constexpr size_t kInputChannelCount = 12;
 
 struct InputChannelInfo {
     InputChannel channel;

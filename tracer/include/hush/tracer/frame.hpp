@@ -32,12 +32,14 @@ enum class Channel : uint8_t {
     MeshId,       // which mesh the primary ray hit (kNoMesh: none)
     VirtualPos,   // reflected virtual position for glossy reprojection (seed 000 Sec. 3.4)
     Reference,    // many-sample estimate of Color
+    Emission,     // radiance emitted by the primary hit towards the camera (part of Direct)
 };
 
 inline constexpr Channel kAllChannels[] = {
     Channel::Color,  Channel::Direct,   Channel::Indirect, Channel::Matte,     Channel::Glossy,
     Channel::Albedo, Channel::Specular, Channel::Normal,   Channel::Position,  Channel::Depth,
     Channel::Motion, Channel::Roughness, Channel::MeshId,  Channel::VirtualPos, Channel::Reference,
+    Channel::Emission,
 };
 
 enum class PixelKind : uint8_t { Half, Float, Uint };

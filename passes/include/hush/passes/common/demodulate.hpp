@@ -4,6 +4,11 @@
 // max(albedo, eps) per channel; a pixel whose albedo is below eps in every channel
 // (emitters, black surfaces, background) keeps its radiance. Remodulation is the
 // exact inverse, over one or two filtered terms (direct + indirect).
+//
+// Emission seen at the primary hit is noise-free and much brighter than the light
+// it sits beside; filtered with its neighbours it would bleed a halo around every
+// emitter. With an `emission` input, demodulate takes it out (max(radiance -
+// emission, 0)) and remodulate adds it back.
 #include <string>
 
 #include <hush/passes/node_context.hpp>
@@ -15,12 +20,16 @@ struct DemodulateSettings {
 };
 
 // Adds pass "<name>"; returns the illumination (rgba32f, transient "<name>").
+// `emission` may be invalid (no emission to take out).
 graph::TextureHandle addDemodulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle radiance,
-                                       graph::TextureHandle albedo, const DemodulateSettings& settings = {});
+                                       graph::TextureHandle albedo, const DemodulateSettings& settings = {},
+                                       graph::TextureHandle emission = {});
 
-// Adds pass "<name>": (a + b) * factor(albedo), b optional (invalid handle: a alone).
+// Adds pass "<name>": (a + b) * factor(albedo) + emission; b and emission optional
+// (invalid handles).
 graph::TextureHandle addRemodulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle a,
                                        graph::TextureHandle b, graph::TextureHandle albedo,
-                                       const DemodulateSettings& settings = {});
+                                       const DemodulateSettings& settings = {},
+                                       graph::TextureHandle emission = {});
 
 } // namespace hush::passes

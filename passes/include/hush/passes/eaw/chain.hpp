@@ -13,6 +13,7 @@
 namespace hush::passes {
 
 struct EawChainSettings {
+    bool separateEmission = true;   // as SvgfSettings::separateEmission
     SanitizeSettings sanitize;
     DemodulateSettings demodulate;
     EawSettings atrous;

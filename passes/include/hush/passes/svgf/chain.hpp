@@ -20,6 +20,9 @@ namespace hush::passes {
 
 struct SvgfSettings {
     bool splitLighting = true;   // filter direct and indirect apart (needs both channels)
+    // Take the primary hit's emission out before filtering and add it back after
+    // (no halo around emitters; docs/passes/common.md). Needs the emission channel.
+    bool separateEmission = true;
     SanitizeSettings sanitize;
     DemodulateSettings demodulate;
     ReprojectSettings reproject;

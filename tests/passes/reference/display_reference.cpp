@@ -1,0 +1,156 @@
+#include "reference/display_reference.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace hush::passes_test::reference {
+
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+double aces(double x) {
+    // Narkowicz 2016: x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14), saturated.
+    x = std::max(x, 0.0);
+    if (x > 1e100) return 1.0;   // the curve's limit is 2.51 / 2.43 > 1: saturated
+    const double y = x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14);
+    return std::clamp(y, 0.0, 1.0);
+}
+
+double reinhard(double x) {
+    x = std::max(x, 0.0);
+    return x / (1.0 + x);
+}
+
+// Malvar & Sullivan's YCoCg: Y = (R + 2G + B) / 4, Co = (R - B) / 2, Cg = (2G - R - B) / 4.
+Vec3 toYCoCg(const Vec3& c) {
+    return {(c[0] + 2.0 * c[1] + c[2]) / 4.0, (c[0] - c[2]) / 2.0, (2.0 * c[1] - c[0] - c[2]) / 4.0};
+}
+
+// Inverse: G = Y + Cg, R = Y - Cg + Co, B = Y - Cg - Co.
+Vec3 fromYCoCg(const Vec3& c) { return {c[0] - c[2] + c[1], c[0] + c[2], c[0] - c[2] - c[1]}; }
+
+Vec3 rgbAt(const FloatImage& image, int x, int y) {
+    return {double(image.clamped(x, y, 0)), double(image.clamped(x, y, 1)), double(image.clamped(x, y, 2))};
+}
+
+// Bilinear at continuous position (px, py), texel centres at +0.5, edges repeated.
+Vec3 bilinear(const FloatImage& image, double px, double py) {
+    const double u = px - 0.5, v = py - 0.5;
+    const int x0 = int(std::floor(u)), y0 = int(std::floor(v));
+    const double fx = u - x0, fy = v - y0;
+    Vec3 out{};
+    const Vec3 c00 = rgbAt(image, x0, y0), c10 = rgbAt(image, x0 + 1, y0);
+    const Vec3 c01 = rgbAt(image, x0, y0 + 1), c11 = rgbAt(image, x0 + 1, y0 + 1);
+    for (int c = 0; c < 3; ++c)
+        out[c] = (1 - fy) * ((1 - fx) * c00[c] + fx * c10[c]) + fy * ((1 - fx) * c01[c] + fx * c11[c]);
+    return out;
+}
+
+struct Box {
+    Vec3 lo, hi, centre;
+};
+
+Box neighbourhood(const FloatImage& current, int x, int y, const passes::TaaSettings& s) {
+    std::array<Vec3, 9> n;
+    int k = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) n[size_t(k++)] = toYCoCg(rgbAt(current, x + dx, y + dy));
+    Box box;
+    for (int c = 0; c < 3; ++c) {
+        if (s.box == passes::TaaBox::Variance) {
+            double mean = 0.0;
+            for (const auto& v : n) mean += v[size_t(c)] / 9.0;
+            double var = 0.0;
+            for (const auto& v : n) var += (v[size_t(c)] - mean) * (v[size_t(c)] - mean) / 9.0;
+            const double half = std::max(double(s.varianceGamma), 0.0) * std::sqrt(var);
+            box.lo[size_t(c)] = mean - half;
+            box.hi[size_t(c)] = mean + half;
+            box.centre[size_t(c)] = mean;
+        } else {
+            double lo = n[0][size_t(c)], hi = lo;
+            for (const auto& v : n) lo = std::min(lo, v[size_t(c)]), hi = std::max(hi, v[size_t(c)]);
+            box.lo[size_t(c)] = lo;
+            box.hi[size_t(c)] = hi;
+            box.centre[size_t(c)] = (lo + hi) / 2.0;
+        }
+    }
+    return box;
+}
+
+// Largest t in [0, 1] with centre + t (h - centre) inside the box.
+Vec3 clip(const Vec3& h, const Box& b) {
+    double t = 1.0;
+    for (size_t c = 0; c < 3; ++c) {
+        const double v = h[c] - b.centre[c];
+        if (h[c] > b.hi[c] && v > 0.0) t = std::min(t, (b.hi[c] - b.centre[c]) / v);
+        if (h[c] < b.lo[c] && v < 0.0) t = std::min(t, (b.lo[c] - b.centre[c]) / v);
+    }
+    Vec3 out;
+    for (size_t c = 0; c < 3; ++c) out[c] = b.centre[c] + t * (h[c] - b.centre[c]);
+    return out;
+}
+
+} // namespace
+
+void tonemapColor(const passes::TonemapSettings& settings, const double in[3], double out[3]) {
+    double x[3];
+    for (int c = 0; c < 3; ++c) x[c] = std::max(in[c] * double(settings.exposure), 0.0);
+    switch (settings.op) {
+    case passes::TonemapOperator::AcesFit:
+        for (int c = 0; c < 3; ++c) out[c] = aces(x[c]);
+        return;
+    case passes::TonemapOperator::ReinhardPerChannel:
+        for (int c = 0; c < 3; ++c) out[c] = reinhard(x[c]);
+        return;
+    case passes::TonemapOperator::ReinhardLuminance: {
+        // rgb * L_d / L with L_d = L / (1 + L); L = 0 -> black.
+        const double lum = 0.2126 * x[0] + 0.7152 * x[1] + 0.0722 * x[2];
+        for (int c = 0; c < 3; ++c) out[c] = lum > 0.0 ? std::min(x[c] * reinhard(lum) / lum, 1.0) : 0.0;
+        return;
+    }
+    }
+}
+
+FloatImage tonemap(const FloatImage& radiance, const passes::TonemapSettings& settings) {
+    FloatImage out(radiance.width, radiance.height, 4, 1.0f);
+    for (uint32_t y = 0; y < out.height; ++y)
+        for (uint32_t x = 0; x < out.width; ++x) {
+            const double in[3] = {radiance.at(x, y, 0), radiance.at(x, y, 1), radiance.at(x, y, 2)};
+            double mapped[3];
+            tonemapColor(settings, in, mapped);
+            for (uint32_t c = 0; c < 3; ++c) out.at(x, y, c) = float(mapped[c]);
+        }
+    return out;
+}
+
+FloatImage Taa::frame(const FloatImage& current, const FloatImage& motion) {
+    FloatImage out(current.width, current.height, 4, 1.0f);
+    const double alpha = std::clamp(double(settings_.alpha), 0.0, 1.0);
+    for (uint32_t y = 0; y < out.height; ++y)
+        for (uint32_t x = 0; x < out.width; ++x) {
+            const Vec3 cur = rgbAt(current, int(x), int(y));
+            // Previous position of this pixel's centre.
+            const double px = x + 0.5 + motion.at(x, y, 0), py = y + 0.5 + motion.at(x, y, 1);
+            const bool onScreen = px >= 0.0 && py >= 0.0 && px < double(out.width) && py < double(out.height);
+            Vec3 result = cur;
+            if (hasHistory_ && onScreen) {
+                const Box box = neighbourhood(current, int(x), int(y), settings_);
+                Vec3 h = toYCoCg(bilinear(history_, px, py));
+                if (settings_.rectify == passes::TaaRectify::Clip) {
+                    h = clip(h, box);
+                } else {
+                    for (size_t c = 0; c < 3; ++c) h[c] = std::clamp(h[c], box.lo[c], box.hi[c]);
+                }
+                const Vec3 rgb = fromYCoCg(h);
+                for (size_t c = 0; c < 3; ++c) result[c] = std::max(rgb[c] + alpha * (cur[c] - rgb[c]), 0.0);
+            }
+            for (uint32_t c = 0; c < 3; ++c) out.at(x, y, c) = float(result[c]);
+        }
+    history_ = out;
+    hasHistory_ = true;
+    return out;
+}
+
+} // namespace hush::passes_test::reference

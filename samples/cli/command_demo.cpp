@@ -17,7 +17,7 @@ namespace hush::cli {
 namespace {
 
 struct DemoDefaults {
-    static constexpr uint32_t frames = 32, referenceEvery = 8, referenceSpp = 256, size = 256;
+    static constexpr uint32_t frames = 32, referenceEvery = 8, referenceSpp = 512, size = 256;
 };
 
 const std::string& usage() {
@@ -40,7 +40,7 @@ const std::string& usage() {
         "  --size <W>x<H>          default 256x256\n"
         "  --frames <n>            default 32\n"
         "  --reference-every <k>   default 8 (frames 7, 15, 23, 31 are scored)\n"
-        "  --reference-spp <n>     samples per pixel of each reference (default 256)\n"
+        "  --reference-spp <n>     samples per pixel of each reference (default 512)\n"
         "  --chain <list>          default: eaw,svgf\n"
         "  --reuse-frames          denoise the frames already in <out>/frames/ instead of rendering\n"
         "  --threads <n>           rendering threads (default: every core)\n"

@@ -36,6 +36,21 @@ bool validId(const std::string& id) {
     });
 }
 
+// A built-in chain under the file's name, so that two presets of one chain stay
+// apart in reports and output folders.
+class NamedChain : public Chain {
+public:
+    NamedChain(std::string name, std::unique_ptr<Chain> inner) : name_(std::move(name)), inner_(std::move(inner)) {}
+    std::string name() const override { return name_; }
+    std::vector<InputChannel> inputs() const override { return inner_->inputs(); }
+    ChainOutputs build(NodeContext& ctx, const DenoiseInputs& inputs) override { return inner_->build(ctx, inputs); }
+    const Chain& inner() const { return *inner_; }
+
+private:
+    std::string name_;
+    std::unique_ptr<Chain> inner_;
+};
+
 std::unique_ptr<Chain> presetChain(ObjectReader& root, const std::string& base) {
     if (base == "svgf") {
         SvgfSettings settings;
@@ -116,6 +131,11 @@ std::unique_ptr<Chain> customChain(ObjectReader& root, const Json& nodes) {
 
 } // namespace
 
+const Chain& unwrapChain(const Chain& chain) {
+    if (const auto* named = dynamic_cast<const NamedChain*>(&chain)) return named->inner();
+    return chain;
+}
+
 std::unique_ptr<Chain> parseChainJson(std::string_view text, const std::string& source) {
     const Json json = chain_file::parse(text, source);
     ObjectReader root(json, source, "");
@@ -125,8 +145,9 @@ std::unique_ptr<Chain> parseChainJson(std::string_view text, const std::string& 
     if (!base.empty() && nodes) fail(source, "", "give either 'base' (a built-in chain) or 'nodes', not both");
     std::unique_ptr<Chain> chain;
     if (!base.empty()) {
-        root.allow("name");
-        chain = presetChain(root, base);
+        std::string name = std::filesystem::path(source).stem().string();
+        root.read("name", name);
+        chain = std::make_unique<NamedChain>(name, presetChain(root, base));
     } else if (nodes) {
         chain = customChain(root, *nodes);
     } else {

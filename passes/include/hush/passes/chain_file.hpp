@@ -24,6 +24,10 @@ std::unique_ptr<Chain> makeBuiltinChain(std::string_view name);
 
 // Parses a chain description; `source` names it in errors (a file name).
 std::unique_ptr<Chain> parseChainJson(std::string_view text, const std::string& source);
+// A chain file with "base" gives the built-in chain wrapped under the file's name
+// ("name", else the file stem); this returns the built-in chain inside (for its
+// settings), or `chain` itself.
+const Chain& unwrapChain(const Chain& chain);
 // Reads and parses a chain file; hush::Error (NotFound) names a missing file.
 std::unique_ptr<Chain> loadChainFile(const std::string& path);
 // A built-in name, else a file path.

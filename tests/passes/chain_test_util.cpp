@@ -59,6 +59,19 @@ std::vector<std::vector<float>> runSequence(std::unique_ptr<passes::Chain> chain
     return displays;
 }
 
+std::vector<graph::TextureHandle> markHistorySources(graph::RenderGraph& graph) {
+    std::vector<graph::TextureHandle> sources;
+    const auto& model = graph.model();
+    for (uint32_t r = 0; r < model.resources.size(); ++r) {
+        if (model.resources[r].origin != graph::ResourceOrigin::History) continue;
+        const uint32_t s = model.historySource(r);
+        if (s == graph::kNone) continue;
+        sources.push_back({s, model.resources[s].versionCount - 1});
+    }
+    for (auto h : sources) graph.markOutput(h);
+    return sources;
+}
+
 std::vector<float> tonemappedRgba(const tracer::Image& hdr) {
     std::vector<float> out(size_t(hdr.width) * hdr.height * 4, 1.0f);
     const passes::TonemapSettings settings;

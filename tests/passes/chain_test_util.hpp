@@ -25,6 +25,10 @@ std::vector<std::vector<float>> runSequence(std::unique_ptr<passes::Chain> chain
                                             const std::vector<tracer::Frame>& frames,
                                             const std::function<ChannelEdit(size_t frame)>& edits = {});
 
+// Marks the end-of-frame value of every history's source as an output (before the
+// first frame), so that tests can read what the next frame's histories will hold.
+std::vector<graph::TextureHandle> markHistorySources(graph::RenderGraph& graph);
+
 // A tracer image (3 channels) tonemapped with the default TonemapSettings, as RGBA.
 std::vector<float> tonemappedRgba(const tracer::Image& hdr);
 // Mean |a - b| over RGB, divided by the mean |b| (0 when b is black).

@@ -30,10 +30,16 @@ DenoisedFrame DenoiseRun::process(const tracer::Frame& frame) {
             inputs.upload(c, zeros_, 3);
             continue;
         }
-        if (!frame.has(tc))
-            throw Error(ErrorKind::NotFound, "frame " + std::to_string(frame.index) + " has no '" +
-                                                 std::string(passes::inputChannelInfo(c).name) +
-                                                 "' layer, which chain '" + runner_.chain().name() + "' reads");
+        if (!frame.has(tc)) {
+            const bool lighting = c == passes::InputChannel::Direct || c == passes::InputChannel::Indirect;
+            throw Error(ErrorKind::NotFound,
+                        "frame " + std::to_string(frame.index) + " has no '" +
+                            std::string(passes::inputChannelInfo(c).name) + "' layer, which chain '" +
+                            runner_.chain().name() + "' reads" +
+                            (lighting ? " (render with direct and indirect, or filter the colour as one term with a "
+                                        "chain file: {\"base\": \"svgf\", \"settings\": {\"splitLighting\": false}})"
+                                      : ""));
+        }
         const auto& image = frame.get(tc);
         inputs.upload(c, image.pixels, image.channels);
     }

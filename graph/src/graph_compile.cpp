@@ -86,7 +86,7 @@ void RenderGraph::compile() {
             continue;
         }
         if (res.kind == ResourceKind::Buffer) {
-            c->buffers[r] = device_.createBuffer({.label = res.name, .size = res.buffer.size,
+            c->buffers[r] = device_.createBuffer({.label = res.name, .size = res.buffer.resolve(model_.outputSize),
                                                   .usage = bufferUsage[r] | rhi::BufferUsage::CopySrc |
                                                            rhi::BufferUsage::CopyDst});
             continue;

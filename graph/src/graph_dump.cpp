@@ -85,7 +85,7 @@ std::string RenderGraph::dumpDot() const {
         if (res.kind == ResourceKind::Texture)
             o << " " << rhi::toString(res.texture.format) << " " << extentText(c.extents[r]);
         else
-            o << " buffer " << res.buffer.size << " B";
+            o << " buffer " << (c.buffers[r] ? c.buffers[r].size() : res.buffer.size) << " B";
         if (c.lifetimes[r].used()) o << "\\nlife " << c.lifetimes[r].first << ".." << c.lifetimes[r].last;
         if (c.memoryOffset[r] != kNone)
             o << "\\noffset " << c.memoryOffset[r] << (c.aliased[r] ? " (aliased)" : "");
@@ -141,7 +141,7 @@ std::string RenderGraph::dumpJson() const {
             o << ", \"format\": \"" << rhi::toString(res.texture.format) << "\", \"extent\": [" << c.extents[r].width
               << ", " << c.extents[r].height << "]";
         else
-            o << ", \"bytes\": " << res.buffer.size;
+            o << ", \"bytes\": " << (c.buffers[r] ? c.buffers[r].size() : res.buffer.size);
         o << ", \"used\": " << (c.cull.resourceUsed[r] ? "true" : "false") << ", \"output\": "
           << (res.output ? "true" : "false") << ", \"versions\": " << res.versionCount;
         if (c.lifetimes[r].used()) o << ", \"lifetime\": [" << c.lifetimes[r].first << ", " << c.lifetimes[r].last << "]";

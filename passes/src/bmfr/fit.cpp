@@ -87,8 +87,6 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
                                     const BmfrGuide& guide, const BmfrFitSettings& settings) {
     validate(settings, guide);
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("bmfr/fit");
-    const rhi::Extent2D sizedFor = ctx.graph.outputSize();
-    const uint64_t capacity = bmfrBlockBufferBytes(sizedFor, settings);
 
     FitParams params{};
     params.blockSize = settings.blockSize;
@@ -113,7 +111,10 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
         auto alb = guideOr("albedo", guide.albedo);
         auto rough = guideOr("roughness", guide.roughness);
         auto mesh = guideOr("meshId", guide.meshId);
-        auto blocks = b.write("blocks", b.create(name + ".blocks", graph::BufferInfo{capacity}));
+        // Sized by the graph from its output size, so the matrix follows size changes.
+        graph::BufferInfo blocksInfo;
+        blocksInfo.sizeFromOutput = [s](rhi::Extent2D output) { return bmfrBlockBufferBytes(output, s); };
+        auto blocks = b.write("blocks", b.create(name + ".blocks", blocksInfo));
         out = b.write("fitted", b.create(name, fullSize()));
         auto group = b.bindGroup(pipeline, 0,
                                  {{.name = "illumination", .texture = illum},
@@ -128,11 +129,6 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
         return [=](graph::PassContext& pc) {
             const rhi::Extent2D size = pc.texture(fitted).size();
             const BmfrBlockGrid grid = bmfrBlockGrid(size, s.blockSize, s.offsetBlocks, pc.frameIndex());
-            if (bmfrBlockBufferBytes(size, s) > capacity)
-                throw Error(ErrorKind::InvalidArgument,
-                            "bmfr fit '" + name + "': the output grew past the size the node was built for (" +
-                                std::to_string(sizedFor.width) + "x" + std::to_string(sizedFor.height) +
-                                "); rebuild the graph");
             FitParams p = params;
             p.offsetX = grid.offsetX;
             p.offsetY = grid.offsetY;

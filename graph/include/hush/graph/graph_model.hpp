@@ -3,6 +3,7 @@
 // step (compile_steps.hpp) reads it, so every step can be tested on a model built
 // by hand, including models the builder could never produce (cycles, two writers).
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,7 +36,16 @@ struct TextureInfo {
 
 struct BufferInfo {
     uint64_t size = 0;
-    friend bool operator==(const BufferInfo&, const BufferInfo&) = default;
+    // When set, the size follows the graph's output size: compile calls it with the
+    // output extent (a per-block matrix of BMFR's fit grows with the image), and a
+    // size change recompiles. `size` is then unused.
+    std::function<uint64_t(rhi::Extent2D output)> sizeFromOutput;
+
+    uint64_t resolve(rhi::Extent2D output) const { return sizeFromOutput ? sizeFromOutput(output) : size; }
+    // Two infos with size functions compare equal (functions cannot be compared).
+    friend bool operator==(const BufferInfo& a, const BufferInfo& b) {
+        return a.size == b.size && bool(a.sizeFromOutput) == bool(b.sizeFromOutput);
+    }
 };
 
 enum class ResourceKind : uint8_t { Texture, Buffer };

@@ -96,8 +96,8 @@ uint64_t bmfrBlockBufferBytes(rhi::Extent2D image, const BmfrFitSettings& settin
 // Adds "<name>" (one compute workgroup per block) and returns the fitted illumination
 // (rgba32f, full size; rgb = T alpha, a = illumination's alpha). `illumination` is
 // the accumulated, demodulated noisy colour (rgb). The transient matrix buffer
-// "<name>.blocks" is sized for the graph's output size when this is called: a graph
-// whose output size grows later must be rebuilt (execute throws hush::Error).
+// "<name>.blocks" is sized by the graph from its output size at each compile
+// (graph::BufferInfo::sizeFromOutput), so the node follows size changes.
 // Throws hush::Error (InvalidArgument) on bad settings or a missing guide texture.
 graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, graph::TextureHandle illumination,
                                     const BmfrGuide& guide, const BmfrFitSettings& settings = {});

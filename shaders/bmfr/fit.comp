@@ -40,7 +40,7 @@ layout(push_constant) uniform Params {
     float flatRange;
     float diagonalGuard;
     float zeroColumn;
-    uint pad0;
+    float dependentColumn;
     uint pad1;
     uvec4 codes[2];   // feature codes, one byte each, feature m in byte m
 } params;
@@ -52,6 +52,8 @@ shared float colourScale[3];
 shared float rowK[kMaxColumns];                 // row k of the matrix before reflection k
 shared float R[kMaxFeatures * kMaxColumns];     // R (M x M) and r (M x 3), row-major
 shared float alpha[kMaxFeatures * 3];
+shared float columnNorm2[kMaxFeatures];         // |T_m + N_m|^2 before the QR
+shared uint liveColumn[kMaxFeatures];           // R row i belongs to column liveColumn[i]
 
 uint featureCode(uint m) {
     return (params.codes[m / 16u][(m / 4u) % 4u] >> (8u * (m % 4u))) & 0xFFu;
@@ -156,8 +158,12 @@ void main() {
         if (!(all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, size)))) continue;
         for (uint m = 0u; m < M; ++m) {
             uint i = base + m * BB + r;
-            matrix[i] = bmfrScaled(featureCode(m), matrix[i], featureLo[m], featureHalfRange[m]) +
-                        bmfrNoise(uvec2(p), params.frame, m, params.epsilon);
+            uint code = featureCode(m);
+            // A flat column stays exactly 0 (no noise): noise there could only fit z's
+            // own noise and regularises nothing; the QR skips the zero column.
+            bool live = code == kBmfrOne || featureHalfRange[m] > 0.0;
+            matrix[i] = bmfrScaled(code, matrix[i], featureLo[m], featureHalfRange[m]) +
+                        (live ? bmfrNoise(uvec2(p), params.frame, m, params.epsilon) : 0.0);
         }
         for (uint c = 0u; c < 3u; ++c) {
             uint i = base + (M + c) * BB + r;
@@ -165,21 +171,40 @@ void main() {
         }
     }
 
+    // Column norms, for the relative dependency test of step 3.
+    {
+        float acc[kMaxColumns];
+        for (uint m = 0u; m < M; ++m) acc[m] = 0.0;
+        for (uint r = tid; r < BB; r += kThreads)
+            for (uint m = 0u; m < M; ++m) acc[m] += matrix[base + m * BB + r] * matrix[base + m * BB + r];
+        barrier();
+        for (uint m = 0u; m < M; ++m) partial[m * kThreads + tid] = acc[m];
+        reduceColumns(0u, 0u, M);
+        if (tid == 0u)
+            for (uint m = 0u; m < M; ++m) columnNorm2[m] = partial[m * kThreads];
+        barrier();
+    }
+
     // 3. Householder QR (Heath 1997, as cited in Sec. 3.2). Step k reflects rows k..W-1
     // so that column k becomes (a, 0, ..., 0), a = -sign(x_0) |x|. With v = x - a e_0,
     // v.v = 2 (|x|^2 + |x_0| |x|) and v.A_j = x.A_j - a A_kj, so one batched reduction of
     // x.A_j over j >= k gives the whole step; A_j -= v (2 v.A_j / v.v).
+    // A column whose part independent of the earlier ones is at most dependentColumn
+    // of its norm (or zero) is dropped: alpha_k = 0 and it consumes no row, so the
+    // later columns still see every row (a rank-revealing QR without pivoting). rho
+    // is the next row to reflect onto; it is the same in every thread.
+    uint rho = 0u;
     for (uint k = 0u; k < M; ++k) {
         float acc[kMaxColumns];
         for (uint j = k; j < C; ++j) acc[j] = 0.0;
         barrier();   // everyone is done reading rowK and partial of step k - 1
         for (uint r = tid; r < BB; r += kThreads) {
-            if (r < k) continue;
+            if (r < rho) continue;
             float xk = matrix[base + k * BB + r];
             for (uint j = k; j < C; ++j) {
                 float a = matrix[base + j * BB + r];
                 acc[j] += xk * a;
-                if (r == k) rowK[j] = a;
+                if (r == rho) rowK[j] = a;
             }
         }
         for (uint j = k; j < C; ++j) partial[j * kThreads + tid] = acc[j];
@@ -187,41 +212,43 @@ void main() {
         float xx = partial[k * kThreads];
         float norm = sqrt(max(xx, 0.0));
         float x0 = rowK[k];
-        if (!(norm > params.zeroColumn)) {
-            // Column k is already zero below row k - 1: no reflection, R_kk = 0 (the
-            // back substitution skips it).
-            if (tid == 0u) {
-                R[k * kMaxColumns + k] = 0.0;
-                for (uint j = k + 1u; j < C; ++j) R[k * kMaxColumns + j] = rowK[j];
-            }
-            continue;
+        float dep = params.dependentColumn;
+        if (!(norm > params.zeroColumn) || !(xx > dep * dep * columnNorm2[k])) {
+            continue;   // dependent or zero: dropped
         }
         float a = x0 >= 0.0 ? -norm : norm;
         float vv = 2.0 * (xx + abs(x0) * norm);
         float factor[kMaxColumns];
         for (uint j = k + 1u; j < C; ++j) factor[j] = 2.0 * (partial[j * kThreads] - a * rowK[j]) / vv;
         if (tid == 0u) {
-            R[k * kMaxColumns + k] = a;
-            for (uint j = k + 1u; j < C; ++j) R[k * kMaxColumns + j] = rowK[j] - (x0 - a) * factor[j];
+            R[rho * kMaxColumns + k] = a;
+            for (uint j = k + 1u; j < C; ++j) R[rho * kMaxColumns + j] = rowK[j] - (x0 - a) * factor[j];
+            liveColumn[rho] = k;
         }
         for (uint r = tid; r < BB; r += kThreads) {
-            if (r <= k) continue;
+            if (r <= rho) continue;
             float v = matrix[base + k * BB + r];
             for (uint j = k + 1u; j < C; ++j) matrix[base + j * BB + r] -= v * factor[j];
         }
+        ++rho;
     }
     barrier();
 
     // 4. Back substitution R alpha = r (Sec. 3.2, Eq. 5), one channel per thread. A
     // diagonal entry the noise did not lift above the guard gives alpha_k = 0.
     if (tid < 3u) {
+        for (uint m = 0u; m < M; ++m) alpha[m * 3u + tid] = 0.0;
         float maxDiag = 0.0;
-        for (uint k = 0u; k < M; ++k) maxDiag = max(maxDiag, abs(R[k * kMaxColumns + k]));
-        for (uint kk = 0u; kk < M; ++kk) {
-            uint k = M - 1u - kk;
-            float d = R[k * kMaxColumns + k];
-            float s = R[k * kMaxColumns + M + tid];
-            for (uint j = k + 1u; j < M; ++j) s -= R[k * kMaxColumns + j] * alpha[j * 3u + tid];
+        for (uint i = 0u; i < rho; ++i) maxDiag = max(maxDiag, abs(R[i * kMaxColumns + liveColumn[i]]));
+        for (uint ii = 0u; ii < rho; ++ii) {
+            uint i = rho - 1u - ii;
+            uint k = liveColumn[i];
+            float d = R[i * kMaxColumns + k];
+            float s = R[i * kMaxColumns + M + tid];
+            for (uint i2 = i + 1u; i2 < rho; ++i2) {
+                uint j = liveColumn[i2];
+                s -= R[i * kMaxColumns + j] * alpha[j * 3u + tid];
+            }
             float value = abs(d) > params.diagonalGuard * maxDiag && d != 0.0 ? s / d : 0.0;
             alpha[k * 3u + tid] = isnan(value) || isinf(value) ? 0.0 : value;
         }

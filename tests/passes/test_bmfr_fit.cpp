@@ -2,7 +2,7 @@
 // reference with the same features, noise and guards.
 //
 // Tolerance (GPU fp32 vs CPU double, same noise): max |diff| <= 2e-3 x the RMS of the
-// reference output, measured worst about 2e-4 (see docs/passes/bmfr.md). The fp32 QR
+// reference output; measured 1e-6 .. 5e-5 of it (docs/passes/bmfr.md). The fp32 QR
 // loses about cond([T + N]) x 6e-8 in relative accuracy; with eps = 0.01 and the
 // nearly collinear w and w^2 of a small block, cond reaches 1e3..1e4, so a few 1e-4
 // of the colour scale is the expected fp32 error, far below the fit's own error.

@@ -12,8 +12,8 @@ namespace {
 struct FitParams {
     uint32_t blockSize, offsetX, offsetY, blocksX;
     uint32_t frame, featureCount;
-    float epsilon, flatRange, diagonalGuard, zeroColumn;
-    uint32_t pad0 = 0, pad1 = 0;
+    float epsilon, flatRange, diagonalGuard, zeroColumn, dependentColumn;
+    uint32_t pad1 = 0;
     uint32_t codes[8] = {};
 };
 static_assert(sizeof(FitParams) == 80);
@@ -97,6 +97,7 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
     params.flatRange = kBmfrFlatRange;
     params.diagonalGuard = kBmfrDiagonalGuard;
     params.zeroColumn = kBmfrZeroColumn;
+    params.dependentColumn = kBmfrDependentColumn;
     for (size_t m = 0; m < settings.features.size(); ++m)
         params.codes[m / 4] |= uint32_t(settings.features[m]) << (8 * (m % 4));
     const BmfrFitSettings s = settings;

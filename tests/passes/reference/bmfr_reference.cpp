@@ -11,6 +11,11 @@ namespace {
 using passes::BmfrFeature;
 
 constexpr float kFloatMax = 3.0e38f;
+// The projection's rank tolerance: a column whose part independent of the earlier
+// ones is under 1e-5 of its norm counts as dependent. The features are fp32 (relative
+// rounding 6e-8, amplified by the per-block scaling), so an exact dependency such as
+// a planar wall leaves a residue of about 1e-6 that must not count as a direction.
+constexpr double kDependent = 1e-5;
 
 // The integer mix of docs/passes/bmfr.md: xor-shift / multiply by 0x9E3779B9.
 uint32_t mix(uint32_t h) {
@@ -89,7 +94,9 @@ Block gatherBlock(const BmfrImages& in, const passes::BmfrFitSettings& s, const 
             else if (flat) v = 0.0;
             else v = std::clamp((0.5 * raw[m][r] - 0.5 * lo) / double(halfRange) - 1.0, -1.0, 1.0);
             b.t[m][r] = v;
-            b.noise[m][r] = bmfrNoise(b.px[r], b.py[r], frame, uint32_t(m), s.epsilon);
+            // Flat (all-zero) columns get no noise (docs/passes/bmfr.md, deviations).
+            const bool live = s.features[m] == BmfrFeature::One || !flat;
+            b.noise[m][r] = live ? bmfrNoise(b.px[r], b.py[r], frame, uint32_t(m), s.epsilon) : 0.0;
         }
     }
     b.z.assign(3, std::vector<double>(W));
@@ -102,47 +109,50 @@ Block gatherBlock(const BmfrImages& in, const passes::BmfrFitSettings& s, const 
     return b;
 }
 
-// Householder QR of the W x (M + 3) matrix `a` (columns), returning the top M rows of
-// R (M x (M + 3)); then back substitution per channel. Guards as in fit.hpp.
+// Householder QR of the W x (M + 3) matrix `a` (columns) with the node's column
+// dropping: a column whose part independent of the earlier kept columns is at most
+// kBmfrDependentColumn of its norm gets alpha = 0 and consumes no row. Then back
+// substitution per channel over the kept columns, with the diagonal guard.
 std::vector<std::array<double, 3>> solveHouseholder(std::vector<std::vector<double>> a, size_t M) {
     const size_t C = a.size(), W = a.empty() ? 0 : a[0].size();
-    std::vector<std::vector<double>> R(M, std::vector<double>(C, 0.0));
+    std::vector<std::vector<double>> R;   // one row per kept column
+    std::vector<size_t> kept;
+    size_t rho = 0;                       // next row to reflect onto
     for (size_t k = 0; k < M; ++k) {
-        if (k >= W) {   // fewer rows than columns: the rest of R is zero
-            break;
-        }
-        double norm2 = 0.0;
-        for (size_t i = k; i < W; ++i) norm2 += a[k][i] * a[k][i];
-        const double norm = std::sqrt(norm2);
-        if (!(norm > double(passes::kBmfrZeroColumn))) {
-            for (size_t j = k + 1; j < C; ++j) R[k][j] = a[j][k];
-            continue;
-        }
-        // v = x - alpha e_k, alpha = -sign(x_k) |x|; H = I - 2 v v^T / v^T v.
-        const double alpha = a[k][k] >= 0.0 ? -norm : norm;
+        double total = 0.0, norm2 = 0.0;
+        for (size_t i = 0; i < W; ++i) total += a[k][i] * a[k][i];
+        for (size_t i = rho; i < W; ++i) norm2 += a[k][i] * a[k][i];
+        const double norm = std::sqrt(norm2), dep = passes::kBmfrDependentColumn;
+        if (!(norm > double(passes::kBmfrZeroColumn)) || !(norm2 > dep * dep * total)) continue;
+        // v = x - alpha e_rho, alpha = -sign(x_rho) |x|; H = I - 2 v v^T / v^T v.
+        const double alpha = a[k][rho] >= 0.0 ? -norm : norm;
         std::vector<double> v(W, 0.0);
-        for (size_t i = k; i < W; ++i) v[i] = a[k][i];
-        v[k] -= alpha;
+        for (size_t i = rho; i < W; ++i) v[i] = a[k][i];
+        v[rho] -= alpha;
         double vv = 0.0;
-        for (size_t i = k; i < W; ++i) vv += v[i] * v[i];
-        R[k][k] = alpha;
+        for (size_t i = rho; i < W; ++i) vv += v[i] * v[i];
+        std::vector<double> row(C, 0.0);
+        row[k] = alpha;
         for (size_t j = k + 1; j < C; ++j) {
             double d = 0.0;
-            for (size_t i = k; i < W; ++i) d += v[i] * a[j][i];
+            for (size_t i = rho; i < W; ++i) d += v[i] * a[j][i];
             const double f = 2.0 * d / vv;
-            for (size_t i = k; i < W; ++i) a[j][i] -= f * v[i];
-            R[k][j] = a[j][k];
+            for (size_t i = rho; i < W; ++i) a[j][i] -= f * v[i];
+            row[j] = a[j][rho];
         }
+        R.push_back(std::move(row));
+        kept.push_back(k);
+        ++rho;
     }
     double maxDiag = 0.0;
-    for (size_t k = 0; k < M; ++k) maxDiag = std::max(maxDiag, std::fabs(R[k][k]));
+    for (size_t i = 0; i < kept.size(); ++i) maxDiag = std::max(maxDiag, std::fabs(R[i][kept[i]]));
     std::vector<std::array<double, 3>> coef(M, {0.0, 0.0, 0.0});
     for (size_t c = 0; c < 3; ++c) {
-        for (size_t kk = 0; kk < M; ++kk) {
-            const size_t k = M - 1 - kk;
-            double sum = R[k][M + c];
-            for (size_t j = k + 1; j < M; ++j) sum -= R[k][j] * coef[j][c];
-            const double d = R[k][k];
+        for (size_t ii = 0; ii < kept.size(); ++ii) {
+            const size_t i = kept.size() - 1 - ii, k = kept[i];
+            double sum = R[i][M + c];
+            for (size_t i2 = i + 1; i2 < kept.size(); ++i2) sum -= R[i][kept[i2]] * coef[kept[i2]][c];
+            const double d = R[i][k];
             coef[k][c] = (std::fabs(d) > passes::kBmfrDiagonalGuard * maxDiag && d != 0.0) ? sum / d : 0.0;
         }
     }
@@ -214,7 +224,7 @@ FloatImage bmfrProjection(const BmfrImages& in, const passes::BmfrFitSettings& s
             double n = 0.0;
             for (double v : q) n += v * v;
             n = std::sqrt(n);
-            if (!(n > 1e-9 * original) || n == 0.0) continue;   // dependent on the earlier columns
+            if (!(n > kDependent * original) || n == 0.0) continue;   // dependent on the earlier columns
             for (double& v : q) v /= n;
             basis.push_back(std::move(q));
         }

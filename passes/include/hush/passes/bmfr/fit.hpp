@@ -70,6 +70,11 @@ inline constexpr float kBmfrFlatRange = 1e-6f;
 // Back substitution skips (alpha_k = 0) a diagonal entry |R_kk| at most this fraction
 // of the block's largest |R_jj|: a column that the noise did not make independent.
 inline constexpr float kBmfrDiagonalGuard = 1e-5f;
+// A column whose part independent of the earlier columns (its norm below the rows
+// already reflected onto) is at most this fraction of its norm is dropped from the
+// fit (alpha = 0, no row consumed). Above fp32 rounding of an exact dependency
+// (about 2e-6 for 1024 rows), below what eps = 1e-4 noise leaves (about 1e-4).
+inline constexpr float kBmfrDependentColumn = 3e-5f;
 // A Householder column whose remaining norm is at most this is already zero.
 inline constexpr float kBmfrZeroColumn = 1e-18f;
 

@@ -1,5 +1,5 @@
 // `hush demo`: the README's main job. Renders the default scene's camera path with
-// the path tracer, denoises it with EAW and SVGF, and reports time and quality side
+// the path tracer, denoises it with EAW, SVGF and BMFR, and reports time and quality side
 // by side: images, a side-by-side strip per scored frame, tables and report.json.
 #include <cstdio>
 #include <filesystem>
@@ -41,7 +41,7 @@ const std::string& usage() {
         "  --frames <n>            default 32\n"
         "  --reference-every <k>   default 8 (frames 7, 15, 23, 31 are scored)\n"
         "  --reference-spp <n>     samples per pixel of each reference (default 512)\n"
-        "  --chain <list>          default: eaw,svgf\n"
+        "  --chain <list>          default: eaw,svgf,bmfr (the strip follows this order)\n"
         "  --reuse-frames          denoise the frames already in <out>/frames/ instead of rendering\n"
         "  --threads <n>           rendering threads (default: every core)\n"
         "  --adapter <text>        use the first adapter whose name contains <text>\n";
@@ -49,7 +49,7 @@ const std::string& usage() {
 }
 
 int runDemo(std::span<const std::string_view> args) {
-    std::string sceneName = "cornell", out = "out", chains = "eaw,svgf";
+    std::string sceneName = "cornell", out = "out", chains = "eaw,svgf,bmfr";
     SequenceRequest sequence;
     sequence.frames = DemoDefaults::frames;
     sequence.referenceEvery = DemoDefaults::referenceEvery;
@@ -106,7 +106,7 @@ int runDemo(std::span<const std::string_view> args) {
 } // namespace
 
 const Command& demoCommand() {
-    static const Command command{"demo", "the main job: render the default scene, denoise it with EAW and SVGF, "
+    static const Command command{"demo", "the main job: render the default scene, denoise it with EAW, SVGF and BMFR, "
                                          "report time and quality", usage(), runDemo};
     return command;
 }

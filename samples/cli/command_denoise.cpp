@@ -28,7 +28,7 @@ const std::string& usage() {
         "plus the temporal error between consecutive outputs.\n"
         "\n"
         "options:\n"
-        "  --chain <list>    comma-separated built-in chains (svgf, eaw) or chain files\n"
+        "  --chain <list>    comma-separated built-in chains (svgf, eaw, bmfr) or chain files\n"
         "                    (docs/passes/chain-files.md); default: svgf\n"
         "  --in <folder>     the frames\n"
         "  --out <folder>    where outputs go (created if missing)\n"

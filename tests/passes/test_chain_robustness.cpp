@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/eaw/chain.hpp>
 #include <hush/passes/svgf/chain.hpp>
 
@@ -21,6 +22,7 @@ namespace {
 
 std::unique_ptr<passes::Chain> makeChain(const std::string& name) {
     if (name == "svgf") return std::make_unique<passes::SvgfChain>();
+    if (name == "bmfr") return std::make_unique<passes::BmfrChain>();
     return std::make_unique<passes::EawChain>();
 }
 
@@ -46,13 +48,14 @@ TEST_CASE("non-finite values in any input channel never reach the output, and th
     const auto all = cornellSequence();
     const std::vector<tracer::Frame> frames(all.begin(), all.begin() + 8);
     constexpr size_t kInjected = 4;
-    for (const std::string name : {"svgf", "eaw"}) {
+    for (const std::string name : {"svgf", "eaw", "bmfr"}) {
         const auto clean = runSequence(makeChain(name), frames);
         for (auto channel : makeChain(name)->inputs()) {
             INFO(name << ": injected into '" << passes::inputChannelInfo(channel).name << "' of frame " << kInjected);
             passes::ChainRunner runner(test::gpu().device, makeChain(name), {frames[0].width, frames[0].height});
             const auto histories = markHistorySources(runner.graph());
             if (name == "svgf") REQUIRE(histories.size() >= 5);   // surface x2, colour, moments, TAA
+            if (name == "bmfr") REQUIRE(histories.size() >= 5);   // surface x2, both accumulations, TAA
             for (size_t f = 0; f < frames.size(); ++f) {
                 uploadFrame(runner, frames[f], f == kInjected ? injectNonFinite(channel) : ChannelEdit{});
                 runner.run();
@@ -112,7 +115,7 @@ TEST_CASE("extreme inputs give finite outputs in range", "[chain][robustness]") 
         {"65504", [](uint32_t, uint32_t) { return 65504.0f; }},
         {"1e6 fireflies", [](uint32_t x, uint32_t y) { return (x * 7 + y * 13) % 29 == 0 ? 1e6f : 0.5f; }},
     };
-    for (const std::string name : {"svgf", "eaw"})
+    for (const std::string name : {"svgf", "eaw", "bmfr"})
         for (const auto& c : cases) {
             INFO(name << ": " << c.what);
             const std::vector<tracer::Frame> frames(4, syntheticFrame(32, 24, c.radiance));
@@ -132,7 +135,7 @@ TEST_CASE("extreme inputs give finite outputs in range", "[chain][robustness]") 
 
 TEST_CASE("odd sizes run: 1x1, 3x5 and 257x131", "[chain][robustness]") {
     test::ValidationScope scope;
-    for (const std::string name : {"svgf", "eaw"})
+    for (const std::string name : {"svgf", "eaw", "bmfr"})
         for (auto size : {rhi::Extent2D{1, 1}, rhi::Extent2D{3, 5}, rhi::Extent2D{257, 131}}) {
             INFO(name << " at " << size.width << "x" << size.height);
             const std::vector<tracer::Frame> frames(

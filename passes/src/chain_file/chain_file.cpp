@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/eaw/chain.hpp>
 #include <hush/passes/svgf/chain.hpp>
 #include <hush/rhi/error.hpp>
@@ -19,11 +20,12 @@ using chain_file::fail;
 using chain_file::Json;
 using chain_file::ObjectReader;
 
-std::vector<std::string> builtinChainNames() { return {"svgf", "eaw"}; }
+std::vector<std::string> builtinChainNames() { return {"svgf", "eaw", "bmfr"}; }
 
 std::unique_ptr<Chain> makeBuiltinChain(std::string_view name) {
     if (name == "svgf") return std::make_unique<SvgfChain>();
     if (name == "eaw") return std::make_unique<EawChain>();
+    if (name == "bmfr") return std::make_unique<BmfrChain>();
     return nullptr;
 }
 
@@ -62,7 +64,12 @@ std::unique_ptr<Chain> presetChain(ObjectReader& root, const std::string& base) 
         chain_file::readSection(root, "settings", settings);
         return std::make_unique<EawChain>(settings);
     }
-    fail(root.source(), "base", "unknown chain '" + base + "'; built-in chains: svgf, eaw");
+    if (base == "bmfr") {
+        BmfrSettings settings;
+        chain_file::readSection(root, "settings", settings);
+        return std::make_unique<BmfrChain>(settings);
+    }
+    fail(root.source(), "base", "unknown chain '" + base + "'; built-in chains: svgf, eaw, bmfr");
 }
 
 chain_file::NodeInstance readNode(const Json& value, const std::string& source, const std::string& path) {
@@ -151,7 +158,7 @@ std::unique_ptr<Chain> parseChainJson(std::string_view text, const std::string& 
     } else if (nodes) {
         chain = customChain(root, *nodes);
     } else {
-        fail(source, "", "expected 'base' (svgf or eaw) or 'nodes'");
+        fail(source, "", "expected 'base' (svgf, eaw or bmfr) or 'nodes'");
     }
     root.finish();
     return chain;

@@ -1,5 +1,7 @@
 #include "chain_file/node_types.hpp"
 
+#include <hush/passes/bmfr/accumulate.hpp>
+#include <hush/passes/bmfr/fit.hpp>
 #include <hush/passes/common/demodulate.hpp>
 #include <hush/passes/common/reproject.hpp>
 #include <hush/passes/common/taa.hpp>
@@ -114,6 +116,24 @@ std::vector<NodeType> makeNodeTypes() {
                  [](const NodeBuild& b) -> std::vector<Value> {
                      return {addEawAtrousLevels(b.ctx, b.name, texture(b, 0), texture(b, 1), texture(b, 2),
                                                 texture(b, 3), std::any_cast<const EawSettings&>(b.settings))};
+                 }});
+    t.push_back({"bmfr.accumulate", "BMFR temporal accumulation: cumulative average until the new sample's weight "
+                                    "reaches minWeight (0.2; 0.1 after the fit), then exponential; count in alpha "
+                                    "(Koskela et al. 2019 Sec. 3.1, 3.3)",
+                 {{"input"}, {"reprojection"}}, {{"accumulated"}}, settingsOf<BmfrAccumulateSettings>(),
+                 [](const NodeBuild& b) -> std::vector<Value> {
+                     return {addBmfrAccumulatePass(b.ctx, b.name, texture(b, 0), texture(b, 1),
+                                                   std::any_cast<const BmfrAccumulateSettings&>(b.settings))};
+                 }});
+    t.push_back({"bmfr.fit", "BMFR per-block feature regression, 32x32 blocks, stochastic regularisation "
+                             "(Koskela et al. 2019 Sec. 3.2); albedo, roughness and meshid only for those features",
+                 {{"illumination"}, {"normal"}, {"position"}, {"albedo", K::Texture, true},
+                  {"roughness", K::Texture, true}, {"meshid", K::Texture, true}},
+                 {{"fitted"}}, settingsOf<BmfrFitSettings>(),
+                 [](const NodeBuild& b) -> std::vector<Value> {
+                     const BmfrGuide guide{texture(b, 1), texture(b, 2), texture(b, 3), texture(b, 4), texture(b, 5)};
+                     return {addBmfrFitPass(b.ctx, b.name, texture(b, 0), guide,
+                                            std::any_cast<const BmfrFitSettings&>(b.settings))};
                  }});
     t.push_back({"tonemap", "HDR radiance to display values in [0, 1] (common/tonemap.hpp)", {{"radiance"}},
                  {{"display"}}, settingsOf<TonemapSettings>(),

@@ -1,5 +1,6 @@
 #include "chain_file/settings_json.hpp"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <utility>
@@ -108,6 +109,55 @@ void readSettings(ObjectReader& r, EawChainSettings& s) {
     readSection(r, "demodulate", s.demodulate);
     readSection(r, "atrous", s.atrous);
     readSection(r, "tonemap", s.tonemap);
+}
+
+} // namespace hush::passes::chain_file
+
+namespace hush::passes::chain_file {
+
+void readSettings(ObjectReader& r, BmfrAccumulateSettings& s) { r.read("minWeight", s.minWeight, 1e-6f, 1.0f); }
+
+void readSettings(ObjectReader& r, BmfrFitSettings& s) {
+    r.read("blockSize", s.blockSize, 16, 64);
+    if (s.blockSize != 16 && s.blockSize != 32 && s.blockSize != 64)
+        fail(r.source(), r.path("blockSize"), "must be 16, 32 or 64");
+    r.read("epsilon", s.epsilon, 0.0f, kBig);
+    r.read("offsetBlocks", s.offsetBlocks);
+    const Json* features = r.child("features");
+    if (!features) return;
+    // The names of BmfrFeature's values, in its order.
+    static constexpr std::array<const char*, kBmfrFeatureKinds> kNames = {
+        "one",        "normalX",    "normalY",    "normalZ", "positionX", "positionY",
+        "positionZ",  "positionX2", "positionY2", "positionZ2", "albedoR", "albedoG",
+        "albedoB",    "roughness",  "meshId",     "blockU",  "blockV"};
+    const std::string path = r.path("features");
+    if (!features->is_array() || features->empty() || features->size() > kBmfrMaxFeatures)
+        fail(r.source(), path, "expected an array of 1 to " + std::to_string(kBmfrMaxFeatures) + " feature names");
+    s.features.clear();
+    for (size_t i = 0; i < features->size(); ++i) {
+        const Json& f = (*features)[i];
+        const std::string at = path + "[" + std::to_string(i) + "]";
+        std::string list;
+        for (const char* n : kNames) list += (list.empty() ? "'" : ", '") + std::string(n) + "'";
+        if (!f.is_string()) fail(r.source(), at, "expected a feature name; one of " + list);
+        const auto name = f.get<std::string>();
+        const auto it = std::find(kNames.begin(), kNames.end(), name);
+        if (it == kNames.end()) fail(r.source(), at, "unknown feature '" + name + "'; one of " + list);
+        s.features.push_back(BmfrFeature(uint32_t(it - kNames.begin())));
+    }
+}
+
+void readSettings(ObjectReader& r, BmfrSettings& s) {
+    r.read("separateEmission", s.separateEmission);
+    r.read("useTaa", s.useTaa);
+    readSection(r, "sanitize", s.sanitize);
+    readSection(r, "demodulate", s.demodulate);
+    readSection(r, "reproject", s.reproject);
+    readSection(r, "accumulate", s.accumulate);
+    readSection(r, "fit", s.fit);
+    readSection(r, "postAccumulate", s.postAccumulate);
+    readSection(r, "tonemap", s.tonemap);
+    readSection(r, "taa", s.taa);
 }
 
 } // namespace hush::passes::chain_file

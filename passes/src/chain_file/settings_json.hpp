@@ -1,6 +1,7 @@
 #pragma once
 // Settings structs from JSON objects: every field of every settings struct has the
 // name it has in C++ (docs/passes/chain-files.md lists them).
+#include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/eaw/chain.hpp>
 #include <hush/passes/svgf/chain.hpp>
 
@@ -17,9 +18,13 @@ void readSettings(ObjectReader& r, SvgfAtrousSettings& s);
 void readSettings(ObjectReader& r, EawSettings& s);
 void readSettings(ObjectReader& r, TonemapSettings& s);
 void readSettings(ObjectReader& r, TaaSettings& s);
+void readSettings(ObjectReader& r, BmfrAccumulateSettings& s);
+// "features" is an array of names: "one", "normalX" .. "positionZ2", "albedoR", ...
+void readSettings(ObjectReader& r, BmfrFitSettings& s);
 // A whole chain's settings: one object per stage ("atrous": {...}) plus its flags.
 void readSettings(ObjectReader& r, SvgfSettings& s);
 void readSettings(ObjectReader& r, EawChainSettings& s);
+void readSettings(ObjectReader& r, BmfrSettings& s);
 
 // Reads `key` (an object) of `parent` into `s`, when present.
 template <class S> void readSection(ObjectReader& parent, std::string_view key, S& s) {

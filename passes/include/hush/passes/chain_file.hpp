@@ -17,7 +17,7 @@
 
 namespace hush::passes {
 
-// "svgf", "eaw": the built-in chains with the papers' defaults.
+// "svgf", "eaw", "bmfr": the built-in chains with the papers' defaults.
 std::vector<std::string> builtinChainNames();
 // A built-in chain by name, or nullptr.
 std::unique_ptr<Chain> makeBuiltinChain(std::string_view name);

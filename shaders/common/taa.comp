@@ -2,11 +2,11 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
 // Temporal anti-aliasing (Karis 2014, "High Quality Temporal Supersampling"): reproject
-// last frame's output through the motion vectors, rectify it against a YCoCg box of
-// the current 3x3 neighbourhood, blend with the current colour. The steps, settings
-// and their sources: passes/common/taa.hpp.
+// last frame's output through the motion vectors (and, if given, a reprojection
+// decision), rectify it against a YCoCg box of the current 3x3 neighbourhood, blend
+// with the current colour. The steps, settings and their sources:
+// passes/common/taa.hpp.
 #include "common/grid.glsl"
-#include "common/color_spaces.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -14,47 +14,64 @@ layout(set = 0, binding = 0) uniform texture2D current;
 layout(set = 0, binding = 1) uniform texture2D motion;
 layout(set = 0, binding = 2) uniform texture2D history;
 layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D resolved;
+// common/reproject's decision (reproject.hpp); not read when useReprojection is 0.
+layout(set = 0, binding = 4) uniform texture2D reprojection;
 
 layout(push_constant) uniform Params {
-    float alpha;           // weight of the current frame
-    float varianceGamma;   // box half-size in standard deviations (box == 1)
-    uint box;              // TaaBox: 0 min/max, 1 mean +- gamma * stddev
-    uint rectify;          // TaaRectify: 0 clamp, 1 clip towards the box centre
-    uint historyValid;     // 0 on the first frame and after a reset
+    float alpha;             // weight of the current frame
+    float varianceGamma;     // box half-size in standard deviations (box == 1)
+    uint box;                // TaaBox: 0 min/max, 1 mean +- gamma * stddev
+    uint rectify;            // TaaRectify: 0 clamp, 1 clip towards the box centre
+    uint historyFilter;      // TaaHistoryFilter: 0 bilinear, 1 Catmull-Rom
+    uint useReprojection;    // 1: a reprojection decision is bound
+    uint historyValid;       // 0 on the first frame and after a reset
 } params;
+
+#include "common/color_spaces.glsl"
+#include "common/reprojection.glsl"
+#include "common/taa_history.glsl"
 
 // The smallest normal fp32: the variance box divides by at least this, so a
 // denormal spread (flushed or not) cannot make an Inf.
 const float kMinNormal = 1.1754944e-38;
+// How far outside the box (relative to its size) a history component must be to be
+// clipped: see clipToBox. 2^-16, well above fp32 rounding of the history (about
+// 1e-6 relative for Catmull-Rom's 16 taps), far below a display quantum (2^-8).
+const float kClipMargin = 1.0 / 65536.0;
 
 vec3 currentAt(ivec2 q, ivec2 size) {
     return texelFetch(current, clamp(q, ivec2(0), size - 1), 0).rgb;
 }
 
-vec3 historyAt(ivec2 q, ivec2 size) {
-    return texelFetch(history, clamp(q, ivec2(0), size - 1), 0).rgb;
+// True when the decision's 2x2 footprint kept every tap of positive bilinear weight
+// (reproject.hpp: a tap is set only if consistent and of weight > 0): the surface
+// is the same all around the previous position, so the history filter may be used.
+bool wholeFootprint(vec4 decision) {
+    vec2 frac = decision.xy - floor(decision.xy);
+    uint positive = 1u | (frac.x > 0.0 ? 2u : 0u) | (frac.y > 0.0 ? 4u : 0u) |
+                    (frac.x > 0.0 && frac.y > 0.0 ? 8u : 0u);
+    return uint(decision.w + 0.5) == kReprojectBilinear && uint(decision.z + 0.5) == positive;
 }
 
-// Bilinear history at this pixel's previous position, centre p + 0.5 + m (texel
-// centres at +0.5, edge texels repeated); false when that position is off screen.
-// Worked in p + m rather than p + 0.5 + m - 0.5: floor(p + m) = p + floor(m) and the
-// weights are m - floor(m), both exact in fp32, so the weights do not lose bits as
-// the pixel coordinate grows (at x = 256 an fp32 position has 3e-5 px steps).
-bool reprojectHistory(ivec2 p, vec2 m, ivec2 size, out vec3 colour) {
+// Last frame's output at this pixel's previous position; false where there is none.
+// With a reprojection decision: none where it says disoccluded; the history filter
+// where the whole 2x2 footprint holds this surface; else the decision's own
+// renormalised footprint (SVGF Sec. 4.1), which leaves out the other surfaces' taps.
+bool historyAt(ivec2 p, ivec2 size, out vec3 colour) {
     colour = vec3(0.0);
-    // 0 <= p + 0.5 + m < size, exact for sizes below 2^22. False for NaN motion, and
-    // checked before ivec2(floor(m)), which would be undefined for a huge m.
-    vec2 centre = vec2(p) + 0.5;
-    if (!all(greaterThanEqual(m, -centre)) || !all(lessThan(m, vec2(size) - centre))) {
-        return false;
+    vec2 m = texelFetch(motion, p, 0).rg;
+    if (params.useReprojection != 0u) {
+        vec4 decision = texelFetch(reprojection, p, 0);
+        ReprojectionFootprint footprint;
+        if (!reprojectionFootprint(decision, footprint)) {
+            return false;
+        }
+        if (!wholeFootprint(decision)) {
+            colour = fetchFootprint(history, footprint).rgb;
+            return true;
+        }
     }
-    vec2 whole = floor(m);
-    vec2 f = m - whole;
-    ivec2 i = p + ivec2(whole);
-    vec3 top = mix(historyAt(i, size), historyAt(i + ivec2(1, 0), size), f.x);
-    vec3 bottom = mix(historyAt(i + ivec2(0, 1), size), historyAt(i + ivec2(1, 1), size), f.x);
-    colour = mix(top, bottom, f.y);
-    return true;
+    return resampleTaaHistory(p, m, size, params.historyFilter, colour);
 }
 
 struct Box {
@@ -98,15 +115,22 @@ Box neighbourhoodBox(ivec2 p, ivec2 size) {
 }
 
 // The point where the segment from the box centre to h leaves the box (h itself when
-// inside). Each quotient has |numerator| < |denominator|, both of one sign, so it
-// lies in [0, 1); a denominator flushed to 0 skips that axis instead of dividing.
+// inside). A component counts as outside only beyond a margin of 2^-16 of the box's
+// largest |component|: where the box is flat along an axis (two colours of equal
+// luma, say), fp32 rounding puts a history that lies on that face a hair outside,
+// and the quotient of two rounding errors would then move it anywhere between the
+// face and the centre (found with a Catmull-Rom history at an edge between two
+// colours of equal Y). Each quotient has |numerator| < |denominator|, both of one
+// sign, so it lies in [0, 1), and the denominator exceeds the margin.
 vec3 clipToBox(vec3 h, Box b) {
     vec3 v = h - b.centre;
+    vec3 extent = max(abs(b.lo), abs(b.hi));
+    float margin = max(extent.x, max(extent.y, extent.z)) * kClipMargin;
     float t = 1.0;
     for (int c = 0; c < 3; ++c) {
-        if (h[c] > b.hi[c] && v[c] > 0.0) {
+        if (h[c] > b.hi[c] + margin && v[c] > 0.0) {
             t = min(t, (b.hi[c] - b.centre[c]) / v[c]);
-        } else if (h[c] < b.lo[c] && v[c] < 0.0) {
+        } else if (h[c] < b.lo[c] - margin && v[c] < 0.0) {
             t = min(t, (b.lo[c] - b.centre[c]) / v[c]);
         }
     }
@@ -121,14 +145,14 @@ void main() {
     }
     vec3 cur = texelFetch(current, p, 0).rgb;
     vec3 hist;
-    bool haveHistory = params.historyValid != 0u &&
-                       reprojectHistory(p, texelFetch(motion, p, 0).rg, size, hist);
+    bool haveHistory = params.historyValid != 0u && historyAt(p, size, hist);
     vec3 result = cur;
     if (haveHistory) {
         Box b = neighbourhoodBox(p, size);
         vec3 h = rgbToYCoCg(hist);
         h = params.rectify == 1u ? clipToBox(h, b) : clamp(h, b.lo, b.hi);
-        // A point of the YCoCg box need not be a colour with non-negative RGB.
+        // A point of the YCoCg box need not be a colour with non-negative RGB (nor
+        // need a Catmull-Rom value: its negative lobes overshoot at edges).
         result = max(mix(yCoCgToRgb(h), cur, clamp(params.alpha, 0.0, 1.0)), vec3(0.0));
     }
     imageStore(resolved, p, vec4(result, 1.0));

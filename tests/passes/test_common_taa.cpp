@@ -1,6 +1,8 @@
 // passes/common/taa: Karis 2014 TAA against the CPU reference over several frames
 // (static, sub-pixel and out-of-screen motion, reset), rectification of a history
-// colour outside the neighbourhood, the extremes and odd sizes.
+// colour outside the neighbourhood, the extremes and odd sizes; each history filter.
+// The history filters' and the reprojection decision's own properties:
+// test_common_taa_history.cpp.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,20 +12,23 @@
 #include <hush/passes/common/taa.hpp>
 
 #include "reference/display_reference.hpp"
+#include "taa_test_graph.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;
 using passes::TaaBox;
+using passes::TaaHistoryFilter;
 using passes::TaaRectify;
 using passes::TaaSettings;
 
 namespace {
 
-// Every box / rectification pair; alpha varies too.
+// Every box / rectification pair, each history filter; alpha varies too.
 const TaaSettings kSettings[] = {
-    {},   // Karis 2014: min/max box, clip, alpha 0.1
+    {},   // the defaults: Karis 2014 (min/max box, clip, alpha 0.1) with Catmull-Rom history
+    {.historyFilter = TaaHistoryFilter::Bilinear},   // Karis 2014 as published
     {.box = TaaBox::MinMax, .rectify = TaaRectify::Clamp},
-    {.box = TaaBox::Variance, .rectify = TaaRectify::Clip},
+    {.box = TaaBox::Variance, .rectify = TaaRectify::Clip, .historyFilter = TaaHistoryFilter::Bilinear},
     {.alpha = 0.5f, .box = TaaBox::Variance, .rectify = TaaRectify::Clamp, .varianceGamma = 1.5f},
 };
 
@@ -32,44 +37,22 @@ const TaaSettings kSettings[] = {
 // measured worst over these tests: see docs/passes/display.md.
 constexpr float kAbsTol = 2e-6f, kRelTol = 2e-6f;
 
-// One TAA node on a NodeHarness; frame() re-uploads the inputs and runs a frame.
-struct TaaGraph {
-    NodeHarness t;
-    graph::TextureHandle out;
-    TaaGraph(rhi::Extent2D size, const TaaSettings& settings) : t(size) {
-        const FloatImage blank(size.width, size.height, 4, 0.0f);
-        out = passes::addTaaPass(t.ctx, "taa", t.input("current", blank),
-                                 t.input("motion", FloatImage(size.width, size.height, 2, 0.0f), Format::RG32Float),
-                                 settings);
-        t.graph.markOutput(out);
-    }
-    FloatImage frame(const FloatImage& current, const FloatImage& motion) {
-        t.update("current", current);
-        t.update("motion", motion);
-        t.graph.execute();
-        t.graph.waitIdle();
-        return readOutput(t.graph, out);
-    }
-};
-
-FloatImage constantMotion(rhi::Extent2D size, float mx, float my) {
-    return makeImage(size.width, size.height, 2, [&](uint32_t, uint32_t, uint32_t c) { return c == 0 ? mx : my; });
-}
-
 // Runs `frames` frames of random display colours (scaled by `scale`, with some
 // zeros) on GPU and reference, comparing each frame; returns the last GPU frame.
+// With a `decision`, the node reads its history through it.
 FloatImage compareOverFrames(rhi::Extent2D size, const TaaSettings& settings, const FloatImage& motion,
-                             uint32_t frames, float scale = 1.0f, float absTol = kAbsTol) {
-    TaaGraph gpu(size, settings);
+                             uint32_t frames, float scale = 1.0f, float absTol = kAbsTol,
+                             const FloatImage& decision = {}) {
+    TaaGraph gpu(size, settings, !decision.pixels.empty());
     reference::Taa ref(settings);
     FloatImage last;
     for (uint32_t f = 0; f < frames; ++f) {
         auto current = randomImage(size.width, size.height, 4, 0.0f, scale, 100 + f);
         for (size_t i = 0; i < current.pixels.size(); i += 7) current.pixels[i] = 0.0f;
         INFO("frame " << f);
-        last = gpu.frame(current, motion);
+        last = gpu.frame(current, motion, decision);
         REQUIRE(nonFiniteCount(last) == 0);
-        HUSH_REQUIRE_IMAGES_MATCH(last, ref.frame(current, motion), absTol, kRelTol, 3);
+        HUSH_REQUIRE_IMAGES_MATCH(last, ref.frame(current, motion, decision), absTol, kRelTol, 3);
         if (f == 0) HUSH_REQUIRE_IMAGES_MATCH(last, current, 0.0f, 0.0f, 3);   // no history: current, exactly
     }
     return last;
@@ -86,7 +69,7 @@ TEST_CASE("TAA matches the CPU reference over frames with a static camera", "[co
     test::ValidationScope scope;
     const rhi::Extent2D size{29, 17};
     for (const auto& settings : kSettings) {
-        INFO("box " << uint32_t(settings.box) << " rectify " << uint32_t(settings.rectify));
+        INFO(describe(settings));
         compareOverFrames(size, settings, constantMotion(size, 0.0f, 0.0f), 6);
     }
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
@@ -100,7 +83,7 @@ TEST_CASE("TAA matches the CPU reference over frames with sub-pixel motion", "[c
         return (c == 0 ? 0.25f : -0.375f) + (x > 20 ? jitter.at(x, y, c) : 0.0f);
     });
     for (const auto& settings : kSettings) {
-        INFO("box " << uint32_t(settings.box) << " rectify " << uint32_t(settings.rectify));
+        INFO(describe(settings));
         compareOverFrames(size, settings, motion, 6);
     }
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
@@ -150,7 +133,7 @@ TEST_CASE("TAA rectifies a history colour outside the current neighbourhood", "[
         return c == 2 ? 0.8f : 0.1f;
     });
     for (const auto& settings : kSettings) {
-        INFO("box " << uint32_t(settings.box) << " rectify " << uint32_t(settings.rectify));
+        INFO(describe(settings));
         TaaGraph gpu(size, settings);
         reference::Taa ref(settings);
         gpu.frame(red, still);
@@ -211,7 +194,7 @@ TEST_CASE("TAA stays finite and matches the reference at 0, 1e-30, 65504 and 1e6
     SECTION("each magnitude alone, relative to its scale") {
         for (float scale : {1e-30f, 65504.0f, 1e6f})
             for (const auto& settings : kSettings) {
-                INFO("scale " << scale << " box " << uint32_t(settings.box) << " rectify " << uint32_t(settings.rectify));
+                INFO("scale " << scale << " " << describe(settings));
                 // fp32 rounding of sums and differences of values of size `scale`.
                 compareOverFrames(size, settings, jitter, 4, scale, 4e-6f * scale);
             }
@@ -226,7 +209,7 @@ TEST_CASE("TAA stays finite and matches the reference at 0, 1e-30, 65504 and 1e6
     SECTION("magnitudes mixed pixel by pixel") {
         const float values[] = {0.0f, 1e-30f, 65504.0f, 1e6f};
         for (const auto& settings : kSettings) {
-            INFO("box " << uint32_t(settings.box) << " rectify " << uint32_t(settings.rectify));
+            INFO(describe(settings));
             TaaGraph gpu(size, settings);
             reference::Taa ref(settings);
             for (uint32_t f = 0; f < 4; ++f) {
@@ -253,7 +236,7 @@ TEST_CASE("TAA matches the reference at 1x1, 3x5 and 257x131", "[common][taa]") 
     for (auto size : {rhi::Extent2D{1, 1}, rhi::Extent2D{3, 5}, rhi::Extent2D{257, 131}}) {
         INFO(size.width << "x" << size.height);
         auto jitter = randomImage(size.width, size.height, 2, -0.4f, 0.4f, 700);
-        for (const auto& settings : {kSettings[0], kSettings[2]}) compareOverFrames(size, settings, jitter, 4);
+        for (const auto& settings : {kSettings[0], kSettings[3]}) compareOverFrames(size, settings, jitter, 4);
     }
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }

@@ -87,6 +87,9 @@ void readSettings(ObjectReader& r, TaaSettings& s) {
     readEnum(r, "rectify", s.rectify,
              std::array{std::pair{"clamp", TaaRectify::Clamp}, std::pair{"clip", TaaRectify::Clip}});
     r.read("varianceGamma", s.varianceGamma, 0.0f, kBig);
+    readEnum(r, "historyFilter", s.historyFilter,
+             std::array{std::pair{"bilinear", TaaHistoryFilter::Bilinear},
+                        std::pair{"catmull-rom", TaaHistoryFilter::CatmullRom}});
 }
 
 void readSettings(ObjectReader& r, SvgfSettings& s) {

@@ -1,7 +1,7 @@
 #pragma once
 // CPU references of the display nodes (passes/common/tonemap, passes/common/taa),
 // written from the formulas in their headers (Narkowicz 2016; Reinhard et al. 2002,
-// Eq. 3; Karis 2014; Salvi 2016) in double precision, independently of the shaders
+// Eq. 3; Karis 2014; Salvi 2016; Keys 1981) in double precision, independently of the shaders
 // and of the public CPU tonemap functions.
 #include <hush/passes/common/taa.hpp>
 #include <hush/passes/common/tonemap.hpp>
@@ -19,9 +19,10 @@ FloatImage tonemap(const FloatImage& radiance, const passes::TonemapSettings& se
 class Taa {
 public:
     explicit Taa(const passes::TaaSettings& settings) : settings_(settings) {}
-    // One frame: `current` (>= 3 channels), `motion` (>= 2 channels, pixels); returns
-    // rgb + alpha 1, which becomes the history of the next frame.
-    FloatImage frame(const FloatImage& current, const FloatImage& motion);
+    // One frame: `current` (>= 3 channels), `motion` (>= 2 channels, pixels) and,
+    // if not empty, a reprojection decision (4 channels, reproject.hpp's encoding);
+    // returns rgb + alpha 1, which becomes the history of the next frame.
+    FloatImage frame(const FloatImage& current, const FloatImage& motion, const FloatImage& decision = {});
     // As RenderGraph::resetHistory(): the next frame has no history.
     void reset() { hasHistory_ = false; }
 

@@ -37,7 +37,7 @@ constexpr const char* kBmfrByNodes = R"({
     {"id": "remod", "node": "remodulate",
      "inputs": {"a": "post", "albedo": "input.albedo", "emission": "input.emission"}},
     {"id": "tm", "node": "tonemap", "inputs": {"radiance": "remod"}},
-    {"id": "taa", "node": "taa", "inputs": {"color": "tm", "motion": "input.motion"}}
+    {"id": "taa", "node": "taa", "inputs": {"color": "tm", "motion": "input.motion", "reprojection": "reproject"}}
   ],
   "outputs": {"display": "taa", "radiance": "remod"}
 })";

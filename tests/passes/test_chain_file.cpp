@@ -82,7 +82,7 @@ TEST_CASE("an svgf chain written node by node runs", "[chain][chain-file]") {
         {"id": "atrous", "node": "svgf.atrous", "inputs": {"illum_variance": "variance", "surface": "surface"}},
         {"id": "remod", "node": "remodulate", "inputs": {"a": "atrous", "albedo": "input.albedo"}},
         {"id": "tm", "node": "tonemap", "inputs": {"radiance": "remod"}},
-        {"id": "taa", "node": "taa", "inputs": {"color": "tm", "motion": "input.motion"}}
+        {"id": "taa", "node": "taa", "inputs": {"color": "tm", "motion": "input.motion", "reprojection": "reproject"}}
       ],
       "outputs": {"display": "taa", "radiance": "remod"}
     })", "svgf-nodes.json");

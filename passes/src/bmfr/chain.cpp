@@ -60,7 +60,8 @@ ChainOutputs BmfrChain::build(NodeContext& ctx, const DenoiseInputs& raw) {
     const auto radiance = addRemodulatePass(ctx, "bmfr.remodulate", post, {}, in[InputChannel::Albedo],
                                             settings_.demodulate, emission);
     auto display = addTonemapPass(ctx, "bmfr.tonemap", radiance, settings_.tonemap);
-    if (settings_.useTaa) display = addTaaPass(ctx, "bmfr.taa", display, in[InputChannel::Motion], settings_.taa);
+    if (settings_.useTaa)
+        display = addTaaPass(ctx, "bmfr.taa", display, in[InputChannel::Motion], settings_.taa, reprojection);
 
     ctx.graph.markOutput(radiance);
     ctx.graph.markOutput(display);

@@ -141,11 +141,12 @@ std::vector<NodeType> makeNodeTypes() {
                      return {addTonemapPass(b.ctx, b.name, texture(b, 0),
                                             std::any_cast<const TonemapSettings&>(b.settings))};
                  }});
-    t.push_back({"taa", "temporal anti-aliasing, YCoCg neighbourhood clamp (Karis 2014)", {{"color"}, {"motion"}},
-                 {{"color"}}, settingsOf<TaaSettings>(),
+    t.push_back({"taa", "temporal anti-aliasing, YCoCg neighbourhood clip (Karis 2014); with a reprojection "
+                        "decision, history only from the same surface",
+                 {{"color"}, {"motion"}, {"reprojection", K::Texture, true}}, {{"color"}}, settingsOf<TaaSettings>(),
                  [](const NodeBuild& b) -> std::vector<Value> {
                      return {addTaaPass(b.ctx, b.name, texture(b, 0), texture(b, 1),
-                                        std::any_cast<const TaaSettings&>(b.settings))};
+                                        std::any_cast<const TaaSettings&>(b.settings), texture(b, 2))};
                  }});
     return t;
 }

@@ -60,7 +60,10 @@ ChainOutputs SvgfChain::build(NodeContext& ctx, const DenoiseInputs& raw) {
                                      emission);
     }
     auto display = addTonemapPass(ctx, "svgf.tonemap", radiance, settings_.tonemap);
-    if (settings_.useTaa) display = addTaaPass(ctx, "svgf.taa", display, in[InputChannel::Motion], settings_.taa);
+    // The reprojection decision keeps TAA from dragging history across an edge that
+    // moved into another surface (docs/passes/display.md).
+    if (settings_.useTaa)
+        display = addTaaPass(ctx, "svgf.taa", display, in[InputChannel::Motion], settings_.taa, reprojection);
 
     ctx.graph.markOutput(radiance);
     ctx.graph.markOutput(display);

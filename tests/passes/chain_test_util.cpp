@@ -10,23 +10,32 @@
 
 namespace hush::passes_test {
 
+namespace {
+std::vector<tracer::Frame> renderCornell(uint32_t size) {
+    const tracer::Renderer renderer(tracer::makeBuiltinScene("cornell"));
+    tracer::RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.referenceSpp = 256;
+    std::vector<tracer::Frame> out;
+    for (uint32_t i = 0; i < 16; ++i) {
+        settings.channels = {tracer::Channel::Color,    tracer::Channel::Direct, tracer::Channel::Indirect,
+                             tracer::Channel::Albedo,   tracer::Channel::Normal, tracer::Channel::Position,
+                             tracer::Channel::Depth,    tracer::Channel::Motion, tracer::Channel::MeshId,
+                             tracer::Channel::Emission};
+        if (i == 7 || i == 11 || i == 15) settings.channels.push_back(tracer::Channel::Reference);
+        out.push_back(renderer.render(i, settings));
+    }
+    return out;
+}
+} // namespace
+
 const std::vector<tracer::Frame>& cornellSequence() {
-    static const std::vector<tracer::Frame> frames = [] {
-        const tracer::Renderer renderer(tracer::makeBuiltinScene("cornell"));
-        tracer::RenderSettings settings;
-        settings.width = settings.height = 96;
-        settings.referenceSpp = 256;
-        std::vector<tracer::Frame> out;
-        for (uint32_t i = 0; i < 16; ++i) {
-            settings.channels = {tracer::Channel::Color,    tracer::Channel::Direct, tracer::Channel::Indirect,
-                                 tracer::Channel::Albedo,   tracer::Channel::Normal, tracer::Channel::Position,
-                                 tracer::Channel::Depth,    tracer::Channel::Motion, tracer::Channel::MeshId,
-                                 tracer::Channel::Emission};
-            if (i == 7 || i == 11 || i == 15) settings.channels.push_back(tracer::Channel::Reference);
-            out.push_back(renderer.render(i, settings));
-        }
-        return out;
-    }();
+    static const std::vector<tracer::Frame> frames = renderCornell(96);
+    return frames;
+}
+
+const std::vector<tracer::Frame>& cornellSequence128() {
+    static const std::vector<tracer::Frame> frames = renderCornell(128);
     return frames;
 }
 

@@ -15,6 +15,8 @@ namespace hush::passes_test {
 // has color, direct, indirect, albedo, normal, position, depth, motion and meshid;
 // frames 7, 11 and 15 a 256-spp reference. Rendered on first use.
 const std::vector<tracer::Frame>& cornellSequence();
+// The same path at 128x128 (BMFR's 32-pixel blocks need room: Sec. 6.1 sizes them for 720p).
+const std::vector<tracer::Frame>& cornellSequence128();
 
 // Called with each channel's pixels before upload, to inject faults.
 using ChannelEdit = std::function<void(passes::InputChannel, std::vector<float>& pixels, uint32_t components)>;

@@ -1,0 +1,131 @@
+#pragma once
+// hush-bench-chains' options and result rows, shared by the measurements
+// (chain_bench_timing.cpp: speed, bandwidth, memory; chain_bench_quality.cpp: image
+// quality on the tracer's scenes) and their tables and JSON (chain_bench_report.cpp).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <hush/graph/render_graph.hpp>
+#include <hush/passes/chain_runner.hpp>
+#include <hush/rhi/rhi.hpp>
+#include <hush/tracer/frame.hpp>
+
+#include "bench_report.hpp"
+
+namespace hush::bench::chain_bench {
+
+using hush::graph::MemoryReport;
+using hush::rhi::AdapterInfo;
+using hush::rhi::AdapterRequest;
+using hush::rhi::Extent2D;
+
+struct Options {
+    std::vector<std::string> chains = {"svgf", "eaw"};
+    // Timing: one cornell frame per size, uploaded once, then run warmup + frames times.
+    bool timing = true;
+    std::vector<Extent2D> sizes = {{640, 360}, {1280, 720}};
+    uint32_t warmup = 5;
+    uint32_t frames = 20;
+    uint32_t probeRuns = 20;   // timed runs of the roofline probe (after 3 warm-up runs)
+    // Quality: a short sequence per scene, references on some frames.
+    bool quality = true;
+    Extent2D qualitySize{128, 128};
+    uint32_t qualityFrames = 16;
+    std::vector<uint32_t> referenceFrames = {7, 15};
+    uint32_t referenceSpp = 256;
+    std::vector<std::string> scenes;   // empty: every built-in scene
+    std::string output = "bench-results/chains.json";
+    AdapterRequest adapter;
+    std::string commandLine;   // as given, for the JSON
+};
+
+// The device's copy bandwidth at one size: the bandwidth probe's RGBA32F texture
+// copy (bandwidth_probe.hpp), (bytes read + bytes written) / median time.
+struct Roofline {
+    Extent2D size;
+    Stats ms;
+    double gbps = 0.0;
+    std::string timer;
+    bool verified = false;
+    double otherCpuShare = -1.0;   // as TimingResult's
+};
+
+struct PassRow {
+    std::string name;
+    Stats gpuMs;
+    // Unique bytes: every resource the pass reads counted once, every one it writes
+    // once (extent x format size), whatever the kernel's footprint.
+    uint64_t bytesRead = 0, bytesWritten = 0;
+    double gbps = 0.0;       // (bytesRead + bytesWritten) / median ms
+    double ofRoofline = 0.0; // gbps / the roofline's gbps at the same size
+};
+
+struct TimingResult {
+    std::string chain;
+    Extent2D size;
+    uint32_t frames = 0;
+    std::vector<PassRow> passes;   // execution order
+    Stats totalGpuMs;              // first pass begin to last pass end
+    Stats cpuRecordMs;
+    double sumOfPassMedians = 0.0;
+    uint64_t bytes = 0;            // over all passes
+    double gbps = 0.0, ofRoofline = 0.0;   // bytes / median total
+    size_t barriersPerFrame = 0;
+    MemoryReport aliased, unaliased;   // the graph compiled with aliasing on / off
+    // Device memory the ChainRunner allocated (its input textures and the graph).
+    uint64_t deviceBytesAliased = 0, deviceBytesUnaliased = 0;
+    uint64_t nonFiniteOutput = 0;  // display + radiance values after the last frame
+    // Share of the host's CPU time that other processes used during the frames
+    // (-1: not known). On lavapipe the "GPU" is the host's cores: other work there
+    // inflates every figure.
+    double otherCpuShare = -1.0;
+};
+
+struct QualityScore {
+    std::string method;   // "noisy", then the chains
+    double rmse = 0.0, ssim = 0.0, psnr = 0.0;   // means over the scored frames
+    double temporal = 0.0;                       // mean over consecutive frame pairs
+    uint64_t nonFinitePixels = 0;
+};
+
+struct QualityRow {
+    std::string scene;
+    uint32_t scoredFrames = 0;
+    double renderSeconds = 0.0;
+    std::vector<QualityScore> scores;
+};
+
+// chain_bench_timing.cpp
+// The channels every chain may read: color, direct, indirect, emission, albedo,
+// normal, position, depth, motion, meshid.
+std::vector<tracer::Channel> denoiserChannels();
+// Uploads every channel `runner`'s chain reads; hush::Error names a missing one.
+void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame);
+// Frame 0 of the cornell box's camera path at 1 spp, with denoiserChannels().
+tracer::Frame renderTimingFrame(Extent2D size);
+// CPU time counters (clock ticks) of the whole host and of this process, from
+// /proc/stat and /proc/self/stat; all zero where unavailable.
+struct CpuTimes {
+    uint64_t hostBusy = 0, hostTotal = 0, self = 0;
+};
+CpuTimes sampleCpuTimes();
+// Others' share of the host's CPU time between two samples, -1 when unknown.
+double otherCpuShare(const CpuTimes& before, const CpuTimes& after);
+Roofline measureRoofline(const rhi::Device& device, Extent2D size, uint32_t runs);
+TimingResult measureChainTiming(const rhi::Device& device, const std::string& chain, const tracer::Frame& frame,
+                                const Roofline& roofline, const Options& options);
+
+// chain_bench_quality.cpp: every scene of the options (progress on stdout).
+std::vector<QualityRow> measureQuality(const rhi::Device& device, const Options& options);
+
+// chain_bench_report.cpp
+void printRooflines(const std::vector<Roofline>& rooflines);
+void printTiming(const TimingResult& result, const Roofline& roofline);
+void printMemory(const std::vector<TimingResult>& results);
+void printQuality(const std::vector<QualityRow>& rows, const Options& options);
+std::string toJson(const Options& options, const AdapterInfo& adapter, bool validation,
+                   const std::vector<Roofline>& rooflines, const std::vector<TimingResult>& timings,
+                   const std::vector<QualityRow>& quality);
+
+} // namespace hush::bench::chain_bench

@@ -1,0 +1,199 @@
+// hush-bench-chains, speed: per-pass GPU time of a chain run over one uploaded frame,
+// each pass's effective bandwidth against the roofline measured in the same run, and
+// the chain's transient memory with and without aliasing.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <map>
+#include <set>
+
+#include <hush/graph/compile_steps.hpp>
+#include <hush/passes/chain_file.hpp>
+#include <hush/rhi/error.hpp>
+#include <hush/tracer/builtin_scenes.hpp>
+#include <hush/tracer/renderer.hpp>
+
+#include "bandwidth_probe.hpp"
+#include "chain_bench.hpp"
+
+namespace hush::bench::chain_bench {
+namespace {
+
+struct PassBytes {
+    uint64_t read = 0, written = 0;
+};
+
+uint64_t resourceBytes(const graph::GraphModel& model, uint32_t resource) {
+    const auto& r = model.resources[resource];
+    if (r.kind == graph::ResourceKind::Buffer) return r.buffer.size;
+    const Extent2D extent = r.texture.size.resolve(model.outputSize);
+    return uint64_t(extent.width) * extent.height * rhi::formatInfo(r.texture.format).bytesPerPixel;
+}
+
+// By pass name, for the live passes: the bytes of every distinct resource a pass
+// reads and of every distinct one it writes (a read-write access counts in both).
+// This is the least a pass must move; a kernel that reads a neighbourhood fetches
+// texels more than once, from caches when it is lucky.
+std::map<std::string, PassBytes> bytesByPass(const graph::GraphModel& model) {
+    const graph::CullResult culled = graph::cull(model);
+    std::map<std::string, PassBytes> out;
+    for (size_t p = 0; p < model.passes.size(); ++p) {
+        if (!culled.passAlive[p]) continue;
+        std::set<uint32_t> reads, writes;
+        for (const auto& access : model.passes[p].accesses) {
+            if (access.resource == graph::kNone) continue;   // an optional port left unconnected
+            if (graph::isRead(access.access)) reads.insert(access.resource);
+            if (graph::isWrite(access.access)) writes.insert(access.resource);
+        }
+        PassBytes& bytes = out[model.passes[p].name];
+        for (uint32_t r : reads) bytes.read += resourceBytes(model, r);
+        for (uint32_t r : writes) bytes.written += resourceBytes(model, r);
+    }
+    return out;
+}
+
+// GB/s (1 GB = 1e9 bytes) of `bytes` moved in `ms`; 0 for a zero time.
+double gigabytesPerSecond(uint64_t bytes, double ms) { return ms > 0.0 ? double(bytes) / (ms * 1e6) : 0.0; }
+
+uint64_t countNonFinite(const std::vector<float>& values) {
+    uint64_t n = 0;
+    for (float v : values) n += std::isfinite(v) ? 0 : 1;
+    return n;
+}
+
+} // namespace
+
+std::vector<tracer::Channel> denoiserChannels() {
+    using tracer::Channel;
+    return {Channel::Color,    Channel::Direct, Channel::Indirect, Channel::Emission, Channel::Albedo,
+            Channel::Normal,   Channel::Position, Channel::Depth, Channel::Motion,   Channel::MeshId};
+}
+
+void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame) {
+    auto& inputs = runner.inputs();
+    for (const auto channel : inputs.channels()) {
+        const auto name = passes::inputChannelInfo(channel).name;
+        const auto layer = tracer::parseChannel(name);
+        if (!layer || !frame.has(*layer))
+            throw Error(ErrorKind::NotFound, "frame " + std::to_string(frame.index) + " has no '" + std::string(name) +
+                                                 "' layer, which chain '" + runner.chain().name() + "' reads");
+        const auto& image = frame.get(*layer);
+        inputs.upload(channel, image.pixels, image.channels);
+    }
+}
+
+tracer::Frame renderTimingFrame(Extent2D size) {
+    const tracer::Renderer renderer(tracer::makeBuiltinScene("cornell"));
+    tracer::RenderSettings settings;
+    settings.width = size.width;
+    settings.height = size.height;
+    settings.channels = denoiserChannels();
+    return renderer.render(0, settings);
+}
+
+CpuTimes sampleCpuTimes() {
+    CpuTimes t;
+    std::ifstream stat("/proc/stat");
+    std::string label;
+    if (stat >> label && label == "cpu") {
+        // user nice system idle iowait irq softirq steal (guest time is inside user)
+        uint64_t field[8] = {};
+        for (auto& f : field) stat >> f;
+        for (uint64_t f : field) t.hostTotal += f;
+        t.hostBusy = t.hostTotal - field[3] - field[4];
+    }
+    // Fields 14 and 15 of /proc/self/stat: utime and stime of every thread (lavapipe's
+    // included). Field 2, the command name, is in parentheses and may hold spaces.
+    std::ifstream self("/proc/self/stat");
+    std::string line;
+    if (std::getline(self, line) && line.rfind(')') != std::string::npos) {
+        std::istringstream rest(line.substr(line.rfind(')') + 2));
+        std::string skip;
+        for (int i = 3; i <= 13; ++i) rest >> skip;
+        uint64_t utime = 0, stime = 0;
+        if (rest >> utime >> stime) t.self = utime + stime;
+    }
+    return t;
+}
+
+double otherCpuShare(const CpuTimes& before, const CpuTimes& after) {
+    if (after.hostTotal <= before.hostTotal || after.self < before.self) return -1.0;
+    const double others = double(after.hostBusy - before.hostBusy) - double(after.self - before.self);
+    return std::clamp(others / double(after.hostTotal - before.hostTotal), 0.0, 1.0);
+}
+
+Roofline measureRoofline(const rhi::Device& device, Extent2D size, uint32_t runs) {
+    const ProbeCase probe{"texture rgba32f", ProbeKind::Texture, rhi::Format::RGBA32Float, size, 16};
+    const CpuTimes before = sampleCpuTimes();
+    const ProbeTimings timings = runDeviceProbe(device, probe, 3, runs);
+    Roofline roofline{.size = size, .ms = summarize(timings.ms), .timer = timings.timer,
+                      .verified = timings.verified, .otherCpuShare = otherCpuShare(before, sampleCpuTimes())};
+    roofline.gbps = gigabytesPerSecond(2 * probe.bytes(), roofline.ms.median);
+    return roofline;
+}
+
+TimingResult measureChainTiming(const rhi::Device& device, const std::string& chain, const tracer::Frame& frame,
+                                const Roofline& roofline, const Options& options) {
+    const Extent2D size{frame.width, frame.height};
+    TimingResult result{.chain = passes::makeChain(chain)->name(), .size = size, .frames = options.frames};
+
+    // Memory first, aliasing off: a runner that compiles and is dropped again.
+    {
+        const uint64_t before = device.allocatedBytes();
+        passes::ChainRunner separate(device, passes::makeChain(chain), size,
+                                     {.label = result.chain, .aliasing = false});
+        result.deviceBytesUnaliased = device.allocatedBytes() - before;
+        result.unaliased = separate.graph().memory();
+    }
+    const uint64_t before = device.allocatedBytes();
+    passes::ChainRunner runner(device, passes::makeChain(chain), size);
+    result.deviceBytesAliased = device.allocatedBytes() - before;
+    result.aliased = runner.graph().memory();
+    result.barriersPerFrame = runner.graph().barrierCount();
+    uploadFrame(runner, frame);
+
+    // The same input every frame: the work of each pass does not depend on the
+    // pixel values, and the histories are valid from the second frame on.
+    std::map<std::string, std::vector<double>> passMs;
+    std::vector<double> totalMs, recordMs;
+    const CpuTimes cpuBefore = sampleCpuTimes();
+    for (uint32_t f = 0; f < options.warmup + options.frames; ++f) {
+        runner.run();
+        const auto& t = runner.graph().timings();
+        if (f < options.warmup) continue;
+        if (!t.valid)
+            throw Error(ErrorKind::Unsupported, "chain '" + result.chain + "': the graph reported no GPU timings "
+                                                "(timestamps unsupported on this adapter?)");
+        for (const auto& p : t.passes) passMs[p.name].push_back(p.gpuMs);
+        totalMs.push_back(t.totalGpuMs);
+        recordMs.push_back(t.cpuRecordMs);
+    }
+    result.otherCpuShare = otherCpuShare(cpuBefore, sampleCpuTimes());
+    result.totalGpuMs = summarize(totalMs);
+    result.cpuRecordMs = summarize(recordMs);
+    result.nonFiniteOutput = countNonFinite(runner.readDisplay()) + countNonFinite(runner.readRadiance());
+
+    const auto bytes = bytesByPass(runner.graph().model());
+    for (const auto& name : runner.graph().passOrder()) {
+        const auto samples = passMs.find(name);
+        if (samples == passMs.end())
+            throw Error(ErrorKind::InvalidArgument,
+                        "chain '" + result.chain + "': pass '" + name + "' has no timings");
+        PassRow row{.name = name, .gpuMs = summarize(samples->second)};
+        if (const auto it = bytes.find(name); it != bytes.end()) {
+            row.bytesRead = it->second.read;
+            row.bytesWritten = it->second.written;
+        }
+        row.gbps = gigabytesPerSecond(row.bytesRead + row.bytesWritten, row.gpuMs.median);
+        row.ofRoofline = roofline.gbps > 0.0 ? row.gbps / roofline.gbps : 0.0;
+        result.sumOfPassMedians += row.gpuMs.median;
+        result.bytes += row.bytesRead + row.bytesWritten;
+        result.passes.push_back(std::move(row));
+    }
+    result.gbps = gigabytesPerSecond(result.bytes, result.totalGpuMs.median);
+    result.ofRoofline = roofline.gbps > 0.0 ? result.gbps / roofline.gbps : 0.0;
+    return result;
+}
+
+} // namespace hush::bench::chain_bench

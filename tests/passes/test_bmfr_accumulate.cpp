@@ -100,7 +100,7 @@ TEST_CASE("bmfr accumulate matches the CPU reference through bilinear, 3x3 and d
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 
-TEST_CASE("bmfr accumulate: cumulative average until the weight reaches 20 %, then exponential; the count "
+TEST_CASE("bmfr accumulate: cumulative average until the weight reaches 20 %, then exponential, and the count "
           "saturates and restarts",
           "[bmfr][bmfr-accumulate]") {
     test::ValidationScope scope;
@@ -228,7 +228,7 @@ TEST_CASE("bmfr accumulate: zero, 1e-30, 65504, 1e6 and 1e12 stay finite on 1x1,
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 
-TEST_CASE("bmfr accumulate rejects a weight outside (0, 1]", "[bmfr][bmfr-accumulate]") {
+TEST_CASE("bmfr accumulate rejects a weight of 0, below 0 or above 1", "[bmfr][bmfr-accumulate]") {
     for (float bad : {0.0f, -0.1f, 1.5f, std::nanf("")}) {
         INFO("minWeight " << bad);
         REQUIRE_THROWS_AS(passes::bmfrAccumulateCountCap({.minWeight = bad}), Error);

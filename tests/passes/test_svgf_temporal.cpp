@@ -96,7 +96,7 @@ TEST_CASE("svgf temporal matches the CPU reference over frames through bilinear,
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 
-TEST_CASE("svgf temporal: cumulative average first, then alpha 0.2; history length counts, caps and resets",
+TEST_CASE("svgf temporal: cumulative average first, then alpha 0.2, and history length counts, caps and resets",
           "[svgf-temporal]") {
     test::ValidationScope scope;
     const uint32_t w = 4, h = 3;

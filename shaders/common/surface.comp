@@ -4,7 +4,10 @@
 // The primary surface in the two textures every edge-stopping and reprojection test
 // reads: normalDepth = (world normal xyz, linear depth) and gradientMesh = (dz/dx,
 // dz/dy, mesh id, 0). The gradient takes, per axis, the one-sided difference of
-// smaller magnitude, so that a depth edge next to a pixel does not inflate its slope.
+// smaller magnitude, so that a depth edge next to a pixel does not inflate its slope;
+// a neighbour on another mesh (or on none) is not the same surface and is not used,
+// so a one-pixel-wide blade of grass against the sky gets slope 0, not the jump to
+// the far plane (which would make every depth test pass).
 #include "common/grid.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -19,12 +22,14 @@ float depthAt(ivec2 p) {
     return texelFetch(depth, p, 0).x;
 }
 
-// The smaller one-sided difference along `axis`; 0 where the image is one pixel wide.
+// The smaller one-sided difference along `axis` to a neighbour on the same mesh; 0
+// where there is none.
 float slope(ivec2 p, ivec2 axis, ivec2 size) {
     float z = depthAt(p);
+    float mesh = texelFetch(meshId, p, 0).x;
     ivec2 lo = p - axis, hi = p + axis;
-    bool hasLo = all(greaterThanEqual(lo, ivec2(0)));
-    bool hasHi = all(lessThan(hi, size));
+    bool hasLo = all(greaterThanEqual(lo, ivec2(0))) && texelFetch(meshId, lo, 0).x == mesh;
+    bool hasHi = all(lessThan(hi, size)) && texelFetch(meshId, hi, 0).x == mesh;
     float dLo = hasLo ? z - depthAt(lo) : 0.0;
     float dHi = hasHi ? depthAt(hi) - z : 0.0;
     if (hasLo && hasHi) {

@@ -38,3 +38,21 @@ TEST_CASE("surface packs normal and depth and takes the smaller one-sided depth 
     }
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
+
+TEST_CASE("surface slope ignores neighbours on other meshes: a one-pixel blade against the sky has slope 0",
+          "[common][surface]") {
+    test::ValidationScope scope;
+    const uint32_t w = 11, h = 4;
+    auto normal = makeImage(w, h, 3, [](uint32_t, uint32_t, uint32_t c) { return c == 2 ? 1.0f : 0.0f; });
+    // Column 5 is a blade (mesh 2, depth 1); the rest is sky (mesh -1, the far plane).
+    auto depth = makeImage(w, h, 1, [](uint32_t x, uint32_t, uint32_t) { return x == 5 ? 1.0f : 1000.0f; });
+    auto mesh = makeImage(w, h, 1, [](uint32_t x, uint32_t, uint32_t) { return x == 5 ? 2.0f : -1.0f; });
+    NodeHarness t({w, h});
+    auto s = passes::addSurfacePass(t.ctx, "surface", t.input("normal", normal),
+                                    t.input("depth", depth, rhi::Format::R32Float),
+                                    t.input("meshid", mesh, rhi::Format::R32Float));
+    auto gm = t.runOnce(s.gradientMesh);
+    HUSH_REQUIRE_IMAGES_MATCH(gm, reference::surface(normal, depth, mesh).gradientMesh, 1e-6f, 1e-6f);
+    CHECK(gm.at(5, 1, 0) == 0.0f);   // was 999 before: every depth test would pass
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}

@@ -4,31 +4,12 @@
 #include <thread>
 
 #include "chain_bench.hpp"
+#include "graph_memory_json.hpp"
 
 namespace hush::bench::chain_bench {
 namespace {
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
-std::string statsJson(const Stats& s) {
-    return "{\"median\": " + number(s.median) + ", \"min\": " + number(s.min) + ", \"max\": " + number(s.max) + "}";
-}
-
-std::string memoryJson(const MemoryReport& m) {
-    return "{\"transient_aliased_bytes\": " + std::to_string(m.transientAliasedBytes) +
-           ", \"transient_unaliased_bytes\": " + std::to_string(m.transientUnaliasedBytes) +
-           ", \"history_bytes\": " + std::to_string(m.historyBytes) +
-           ", \"output_bytes\": " + std::to_string(m.outputBytes) +
-           ", \"transient_textures\": " + std::to_string(m.transientTextures) + "}";
-}
-
 std::string sizeText(Extent2D size) { return std::to_string(size.width) + "x" + std::to_string(size.height); }
-
-double mib(uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
 
 } // namespace
 
@@ -112,9 +93,9 @@ std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation
         const auto& r = rooflines[i];
         json += std::string(i ? ",\n" : "\n") + "    {\"kernel\": \"texture rgba32f\", \"width\": " +
                 std::to_string(r.size.width) + ", \"height\": " + std::to_string(r.size.height) +
-                ", \"ms\": " + statsJson(r.ms) + ", \"gbps\": " + number(r.gbps) + ", \"timer\": " +
+                ", \"ms\": " + statsJson(r.ms) + ", \"gbps\": " + jsonNumber(r.gbps) + ", \"timer\": " +
                 jsonString(r.timer) + ", \"verified\": " + (r.verified ? "true" : "false") +
-                ", \"other_processes_cpu_share\": " + number(r.otherCpuShare) + "}";
+                ", \"other_processes_cpu_share\": " + jsonNumber(r.otherCpuShare) + "}";
     }
     json += "\n  ],\n  \"timing\": [";
     for (size_t i = 0; i < timings.size(); ++i) {
@@ -123,12 +104,12 @@ std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation
                 ", \"width\": " + std::to_string(t.size.width) + ", \"height\": " + std::to_string(t.size.height) +
                 ", \"frames\": " + std::to_string(t.frames) + ",\n     \"gpu_frame_ms\": " + statsJson(t.totalGpuMs) +
                 ", \"cpu_record_ms\": " + statsJson(t.cpuRecordMs) +
-                ", \"sum_of_pass_medians_ms\": " + number(t.sumOfPassMedians) +
-                ", \"bytes\": " + std::to_string(t.bytes) + ", \"gbps\": " + number(t.gbps) +
-                ", \"of_roofline\": " + number(t.ofRoofline) +
+                ", \"sum_of_pass_medians_ms\": " + jsonNumber(t.sumOfPassMedians) +
+                ", \"bytes\": " + std::to_string(t.bytes) + ", \"gbps\": " + jsonNumber(t.gbps) +
+                ", \"of_roofline\": " + jsonNumber(t.ofRoofline) +
                 ", \"barriers_per_frame\": " + std::to_string(t.barriersPerFrame) +
                 ", \"non_finite_output_values\": " + std::to_string(t.nonFiniteOutput) +
-                ", \"other_processes_cpu_share\": " + number(t.otherCpuShare) +
+                ", \"other_processes_cpu_share\": " + jsonNumber(t.otherCpuShare) +
                 ",\n     \"memory\": {\"aliased\": " + memoryJson(t.aliased) +
                 ", \"not_aliased\": " + memoryJson(t.unaliased) +
                 ", \"device_bytes_aliased\": " + std::to_string(t.deviceBytesAliased) +
@@ -137,8 +118,8 @@ std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation
             const auto& p = t.passes[k];
             json += std::string(k ? ",\n" : "\n") + "       {\"name\": " + jsonString(p.name) +
                     ", \"gpu_ms\": " + statsJson(p.gpuMs) + ", \"bytes_read\": " + std::to_string(p.bytesRead) +
-                    ", \"bytes_written\": " + std::to_string(p.bytesWritten) + ", \"gbps\": " + number(p.gbps) +
-                    ", \"of_roofline\": " + number(p.ofRoofline) + "}";
+                    ", \"bytes_written\": " + std::to_string(p.bytesWritten) + ", \"gbps\": " + jsonNumber(p.gbps) +
+                    ", \"of_roofline\": " + jsonNumber(p.ofRoofline) + "}";
         }
         json += "]}";
     }
@@ -153,12 +134,12 @@ std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation
         const auto& row = quality[i];
         json += std::string(i ? ",\n" : "\n") + "    {\"scene\": " + jsonString(row.scene) +
                 ", \"scored_frames\": " + std::to_string(row.scoredFrames) +
-                ", \"render_seconds\": " + number(row.renderSeconds) + ", \"methods\": [";
+                ", \"render_seconds\": " + jsonNumber(row.renderSeconds) + ", \"methods\": [";
         for (size_t k = 0; k < row.scores.size(); ++k) {
             const auto& s = row.scores[k];
             json += std::string(k ? ", " : "") + "{\"method\": " + jsonString(s.method) +
-                    ", \"rmse\": " + number(s.rmse) + ", \"psnr\": " + number(s.psnr) +
-                    ", \"ssim\": " + number(s.ssim) + ", \"temporal_error\": " + number(s.temporal) +
+                    ", \"rmse\": " + jsonNumber(s.rmse) + ", \"psnr\": " + jsonNumber(s.psnr) +
+                    ", \"ssim\": " + jsonNumber(s.ssim) + ", \"temporal_error\": " + jsonNumber(s.temporal) +
                     ", \"non_finite_pixels\": " + std::to_string(s.nonFinitePixels) + "}";
         }
         json += "]}";

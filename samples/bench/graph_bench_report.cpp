@@ -4,31 +4,9 @@
 #include <thread>
 
 #include "graph_bench.hpp"
+#include "graph_memory_json.hpp"
 
 namespace hush::bench::graph_bench {
-namespace {
-
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
-std::string statsJson(const Stats& s) {
-    return "{\"median\": " + number(s.median) + ", \"min\": " + number(s.min) + ", \"max\": " + number(s.max) + "}";
-}
-
-std::string memoryJson(const MemoryReport& m) {
-    return "{\"transient_aliased_bytes\": " + std::to_string(m.transientAliasedBytes) +
-           ", \"transient_unaliased_bytes\": " + std::to_string(m.transientUnaliasedBytes) +
-           ", \"history_bytes\": " + std::to_string(m.historyBytes) +
-           ", \"output_bytes\": " + std::to_string(m.outputBytes) +
-           ", \"transient_textures\": " + std::to_string(m.transientTextures) + "}";
-}
-
-double mib(uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
-
-} // namespace
 
 void printTables(const std::vector<CompileRow>& compiles, const std::vector<OverheadResult>& overheads,
                  const MemoryRow& m) {
@@ -115,8 +93,8 @@ std::string toJson(const Options& options, const AdapterInfo& adapter, bool vali
                 ",\n     \"hand_execute_ms\": " + statsJson(o.handExecuteMs) +
                 ",\n     \"graph_record_ms\": " + statsJson(o.graphRecordMs) +
                 ",\n     \"hand_record_ms\": " + statsJson(o.handRecordMs) +
-                ",\n     \"execute_ratio\": " + number(o.executeRatio) +
-                ", \"record_ratio\": " + number(o.recordRatio) + ", \"gpu_frame_ms\": " + statsJson(o.gpuMs) +
+                ",\n     \"execute_ratio\": " + jsonNumber(o.executeRatio) +
+                ", \"record_ratio\": " + jsonNumber(o.recordRatio) + ", \"gpu_frame_ms\": " + statsJson(o.gpuMs) +
                 ", \"verified\": " + (o.verified ? "true" : "false") + "}";
     }
     json += "\n  ],\n";

@@ -43,6 +43,13 @@ Score score(const std::vector<std::vector<float>>& displays, const std::vector<t
     return s;
 }
 
+// The noisy input, tonemapped like the chains' display output.
+Score noisyScore(const std::vector<tracer::Frame>& frames, passes::MetricsEvaluator& metrics) {
+    std::vector<std::vector<float>> noisy;
+    for (const auto& f : frames) noisy.push_back(tonemappedRgba(f.get(tracer::Channel::Color)));
+    return score(noisy, frames, metrics);
+}
+
 } // namespace
 
 TEST_CASE("svgf beats the noisy input and eaw on ssim and temporal error", "[chain][quality]") {
@@ -50,9 +57,7 @@ TEST_CASE("svgf beats the noisy input and eaw on ssim and temporal error", "[cha
     const auto& frames = cornellSequence();
     passes::MetricsEvaluator metrics(test::gpu().device, {frames[0].width, frames[0].height});
 
-    std::vector<std::vector<float>> noisy;
-    for (const auto& f : frames) noisy.push_back(tonemappedRgba(f.get(tracer::Channel::Color)));
-    const Score input = score(noisy, frames, metrics);
+    const Score input = noisyScore(frames, metrics);
     const Score eaw = score(runSequence(std::make_unique<passes::EawChain>(), frames), frames, metrics);
     const Score svgf = score(runSequence(std::make_unique<passes::SvgfChain>(), frames), frames, metrics);
     std::printf("quality 96x96 cornell, 16 frames: SSIM noisy %.4f eaw %.4f svgf %.4f | RMSE noisy %.4f eaw %.4f "
@@ -82,9 +87,7 @@ TEST_CASE("bmfr beats the noisy input, and with blocks scaled to 96x96 and no TA
     const auto& frames = cornellSequence();
     passes::MetricsEvaluator metrics(test::gpu().device, {frames[0].width, frames[0].height});
 
-    std::vector<std::vector<float>> noisy;
-    for (const auto& f : frames) noisy.push_back(tonemappedRgba(f.get(tracer::Channel::Color)));
-    const Score input = score(noisy, frames, metrics);
+    const Score input = noisyScore(frames, metrics);
     const Score eaw = score(runSequence(std::make_unique<passes::EawChain>(), frames), frames, metrics);
     const Score paper = score(runSequence(std::make_unique<passes::BmfrChain>(), frames), frames, metrics);
     passes::BmfrSettings scaled;
@@ -111,9 +114,7 @@ TEST_CASE("bmfr with the paper's defaults beats the noisy input and eaw on rmse 
     test::ValidationScope scope;
     const auto& frames = cornellSequence128();
     passes::MetricsEvaluator metrics(test::gpu().device, {frames[0].width, frames[0].height});
-    std::vector<std::vector<float>> noisy;
-    for (const auto& f : frames) noisy.push_back(tonemappedRgba(f.get(tracer::Channel::Color)));
-    const Score input = score(noisy, frames, metrics);
+    const Score input = noisyScore(frames, metrics);
     const Score eaw = score(runSequence(std::make_unique<passes::EawChain>(), frames), frames, metrics);
     const Score bmfr = score(runSequence(std::make_unique<passes::BmfrChain>(), frames), frames, metrics);
     std::printf("quality 128x128 cornell, 16 frames: SSIM noisy %.4f eaw %.4f bmfr %.4f | RMSE noisy %.4f eaw %.4f "

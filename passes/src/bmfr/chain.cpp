@@ -13,9 +13,14 @@ bool readsRoughness(const BmfrFitSettings& fit) {
 } // namespace
 
 BmfrChain::BmfrChain(const BmfrSettings& settings) : settings_(settings) {
+    if (settings_.halfPrecision) {
+        settings_.accumulate.format = rhi::Format::RGBA16Float;
+        settings_.fit.format = rhi::Format::RGBA16Float;
+        settings_.postAccumulate.format = rhi::Format::RGBA16Float;
+    }
     // Fail at construction, not at the first build, on a weight outside (0, 1].
-    bmfrAccumulateCountCap(settings.accumulate);
-    bmfrAccumulateCountCap(settings.postAccumulate);
+    bmfrAccumulateCountCap(settings_.accumulate);
+    bmfrAccumulateCountCap(settings_.postAccumulate);
 }
 
 std::vector<InputChannel> BmfrChain::inputs() const {

@@ -32,6 +32,8 @@ void validate(const BmfrFitSettings& s, const BmfrGuide& guide) {
     auto fail = [](const std::string& what) { throw Error(ErrorKind::InvalidArgument, "addBmfrFitPass: " + what); };
     if (s.blockSize != 16 && s.blockSize != 32 && s.blockSize != 64) fail("blockSize must be 16, 32 or 64");
     if (!(std::isfinite(s.epsilon) && s.epsilon >= 0.0f)) fail("epsilon must be finite and >= 0");
+    if (s.format != rhi::Format::RGBA32Float && s.format != rhi::Format::RGBA16Float)
+        fail("format must be RGBA32Float or RGBA16Float");
     if (s.features.empty() || s.features.size() > kBmfrMaxFeatures)
         fail("features: 1 to " + std::to_string(kBmfrMaxFeatures) + " of them");
     for (BmfrFeature f : s.features) {
@@ -86,7 +88,9 @@ uint64_t bmfrBlockBufferBytes(rhi::Extent2D image, const BmfrFitSettings& s) {
 graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, graph::TextureHandle illumination,
                                     const BmfrGuide& guide, const BmfrFitSettings& settings) {
     validate(settings, guide);
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get("bmfr/fit");
+    // One shader per output format: the image's format qualifier must be literal.
+    const rhi::ComputePipeline pipeline =
+        ctx.pipelines.get(settings.format == rhi::Format::RGBA16Float ? "bmfr/fit_rgba16f" : "bmfr/fit");
 
     FitParams params{};
     params.blockSize = settings.blockSize;
@@ -115,7 +119,7 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
         graph::BufferInfo blocksInfo;
         blocksInfo.sizeFromOutput = [s](rhi::Extent2D output) { return bmfrBlockBufferBytes(output, s); };
         auto blocks = b.write("blocks", b.create(name + ".blocks", blocksInfo));
-        out = b.write("fitted", b.create(name, fullSize()));
+        out = b.write("fitted", b.create(name, fullSize(s.format)));
         auto group = b.bindGroup(pipeline, 0,
                                  {{.name = "illumination", .texture = illum},
                                   {.name = "normal", .texture = n},

@@ -153,6 +153,7 @@ void readSettings(ObjectReader& r, BmfrFitSettings& s) {
 void readSettings(ObjectReader& r, BmfrSettings& s) {
     r.read("separateEmission", s.separateEmission);
     r.read("useTaa", s.useTaa);
+    r.read("halfPrecision", s.halfPrecision);
     readSection(r, "sanitize", s.sanitize);
     readSection(r, "demodulate", s.demodulate);
     readSection(r, "reproject", s.reproject);

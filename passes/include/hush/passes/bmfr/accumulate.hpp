@@ -32,20 +32,24 @@ struct BmfrAccumulateSettings {
     // the fitted frames ("10% of new data and 90% old data"). In (0, 1]; 1 keeps no
     // history.
     float minWeight = 0.2f;
+    // Format of the output and its history: RGBA32Float (default) or RGBA16Float
+    // (BmfrSettings::halfPrecision; values clamped to +-65504, the largest finite half).
+    rhi::Format format = rhi::Format::RGBA32Float;
 };
 
 // Sec. 3.3's setting for the accumulation after the fit.
 inline BmfrAccumulateSettings bmfrPostAccumulateSettings() { return {.minWeight = 0.1f}; }
 
 // The sample count at which the blend becomes exponential: ceil(1 / minWeight).
-// Throws hush::Error (InvalidArgument) unless 0 < minWeight <= 1.
+// Throws hush::Error (InvalidArgument) unless 0 < minWeight <= 1 and the format is
+// RGBA32Float or RGBA16Float.
 uint32_t bmfrAccumulateCountCap(const BmfrAccumulateSettings& settings);
 
-// Adds pass "<name>": rgba32f transient "<name>", rgb the accumulated input, alpha the
+// Adds pass "<name>": transient "<name>" in settings.format (rgba32f by default), rgb the accumulated input, alpha the
 // per-pixel sample count n (an integer in [1, N]). Its history is itself
 // (graph.history(name)). `input` is read as rgb (any float format); `reprojection`
 // is addReprojectPass's decision. Throws hush::Error (InvalidArgument) on a bad
-// minWeight.
+// minWeight or format.
 graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle input,
                                            graph::TextureHandle reprojection,
                                            const BmfrAccumulateSettings& settings = {});

@@ -31,6 +31,11 @@ struct BmfrSettings {
     TonemapSettings tonemap;
     TaaSettings taa;
     bool useTaa = true;   // Sec. 3.3: "As a last step of the pipeline, TAA (Karis 2014) is used"
+    // Store the BMFR temporaries (both accumulations, their histories and the fit
+    // output) as rgba16f instead of rgba32f; Sec. 6.1 credits half-precision buffers
+    // for part of the paper's speed. Overrides the three stages' `format`. Values are
+    // clamped to +-65504 (the largest finite half); the fit's matrix stays fp32.
+    bool halfPrecision = false;
 };
 
 class BmfrChain : public Chain {

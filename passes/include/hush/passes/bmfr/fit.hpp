@@ -61,6 +61,10 @@ struct BmfrFitSettings {
     // Displace the block grid by one of 16 pre-generated offsets, chosen by the frame
     // index (Sec. 6.1); false: the grid starts at pixel (0, 0) every frame.
     bool offsetBlocks = true;
+    // Format of the fitted output: RGBA32Float (default) or RGBA16Float
+    // (BmfrSettings::halfPrecision; clamped to +-65504). The block matrix buffer and
+    // the QR stay fp32 either way.
+    rhi::Format format = rhi::Format::RGBA32Float;
 };
 
 // A feature whose per-block range (max - min) is at most this fraction of its
@@ -94,7 +98,7 @@ BmfrBlockGrid bmfrBlockGrid(rhi::Extent2D image, uint32_t blockSize, bool offset
 uint64_t bmfrBlockBufferBytes(rhi::Extent2D image, const BmfrFitSettings& settings);
 
 // Adds "<name>" (one compute workgroup per block) and returns the fitted illumination
-// (rgba32f, full size; rgb = T alpha, a = illumination's alpha). `illumination` is
+// (settings.format, rgba32f by default, full size; rgb = T alpha, a = illumination's alpha). `illumination` is
 // the accumulated, demodulated noisy colour (rgb). The transient matrix buffer
 // "<name>.blocks" is sized by the graph from its output size at each compile
 // (graph::BufferInfo::sizeFromOutput), so the node follows size changes.

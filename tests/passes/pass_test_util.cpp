@@ -73,6 +73,14 @@ FloatImage readOutput(const graph::RenderGraph& graph, TextureHandle output) {
     return readTexture(graph.outputTexture(output), graph.outputState(output));
 }
 
+std::vector<FloatImage> executeAndRead(graph::RenderGraph& graph, const std::vector<TextureHandle>& outputs) {
+    graph.execute();
+    graph.waitIdle();
+    std::vector<FloatImage> images;
+    for (auto h : outputs) images.push_back(readOutput(graph, h));
+    return images;
+}
+
 std::vector<uint32_t> readOutputBuffer(const graph::RenderGraph& graph, graph::BufferHandle output) {
     return test::valuesOf<uint32_t>(test::gpu().queue().readBuffer(graph.outputBuffer(output)));
 }

@@ -44,6 +44,8 @@ rhi::Texture uploadTexture(const FloatImage& image, Format format, const std::st
 FloatImage readTexture(const rhi::Texture& texture, rhi::ResourceState state);
 // A graph output after graph.waitIdle().
 FloatImage readOutput(const graph::RenderGraph& graph, TextureHandle output);
+// Runs one frame and reads back `outputs` (already marked as outputs), in order.
+std::vector<FloatImage> executeAndRead(graph::RenderGraph& graph, const std::vector<TextureHandle>& outputs);
 std::vector<uint32_t> readOutputBuffer(const graph::RenderGraph& graph, graph::BufferHandle output);
 
 // A graph, its pipelines and a NodeContext, on the shared test device.

@@ -62,11 +62,7 @@ std::vector<FloatImage> gpuLevels(const Scene& s, const passes::EawSettings& set
         t.graph.markOutput(levels.back());
     }
     if (!levels.empty()) CHECK(levels.back() == last);
-    t.graph.execute();
-    t.graph.waitIdle();
-    std::vector<FloatImage> out;
-    for (auto level : levels) out.push_back(readOutput(t.graph, level));
-    return out;
+    return executeAndRead(t.graph, levels);
 }
 
 } // namespace

@@ -83,11 +83,7 @@ std::vector<FloatImage> gpuLevels(const FloatImage& illum, const reference::Surf
         levels.push_back(transient(t.graph, "atrous.level." + std::to_string(i)));
         t.graph.markOutput(levels.back());
     }
-    t.graph.execute();
-    t.graph.waitIdle();
-    std::vector<FloatImage> out;
-    for (auto level : levels) out.push_back(readOutput(t.graph, level));
-    return out;
+    return executeAndRead(t.graph, levels);
 }
 
 } // namespace

@@ -12,8 +12,8 @@ include(CMakePackageConfigHelpers)
 set(HUSH_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/hush"
     CACHE STRING "Where the hush CMake package files are installed, relative to the prefix")
 
-# Consumers see hush::rhi, hush::graph, hush::passes and hush::shaders (each target sets its EXPORT_NAME).
-install(TARGETS hush_rhi hush_graph hush_shaders hush_passes
+# Consumers see hush::core, hush::rhi, hush::graph, hush::passes and hush::shaders (each target sets its EXPORT_NAME).
+install(TARGETS hush_core hush_rhi hush_graph hush_shaders hush_passes
   EXPORT hushTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
   LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
@@ -21,7 +21,7 @@ install(TARGETS hush_rhi hush_graph hush_shaders hush_passes
 # $<INSTALL_INTERFACE:include>, set in rhi/ and shaders/.)
 
 # Public headers keep their <hush/<layer>/...> paths.
-foreach(layer_include IN ITEMS rhi/include graph/include passes/include shaders/include)
+foreach(layer_include IN ITEMS core/include rhi/include graph/include passes/include shaders/include)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${layer_include}/hush"
           DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
           FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")

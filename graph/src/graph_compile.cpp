@@ -2,7 +2,7 @@
 // textures (aliased in one memory block where lifetimes allow), history pairs, bind
 // groups and RHI barrier lists for both frame parities, and the frame slots.
 #include <hush/graph/render_graph.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "compiled_graph.hpp"
 #include "frame_slot.hpp"

@@ -1,11 +1,10 @@
 // dump: the compiled graph as Graphviz DOT (to look at) and JSON (to process).
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
+#include <hush/core/atomic_file.hpp>
+#include <hush/core/error.hpp>
 #include <hush/graph/render_graph.hpp>
-#include <hush/rhi/error.hpp>
 
 #include "compiled_graph.hpp"
 
@@ -36,22 +35,6 @@ const char* originName(ResourceOrigin o) {
 }
 
 std::string extentText(rhi::Extent2D e) { return std::to_string(e.width) + "x" + std::to_string(e.height); }
-
-void writeAtomically(const std::string& path, const std::string& text) {
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.flush();
-        if (!out) throw Error(ErrorKind::InvalidArgument, "cannot write graph dump '" + tmp + "'");
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp);
-        throw Error(ErrorKind::InvalidArgument, "cannot write graph dump '" + path + "': " + ec.message());
-    }
-}
 
 } // namespace
 
@@ -161,8 +144,8 @@ std::string RenderGraph::dumpJson() const {
 }
 
 void RenderGraph::writeDump(const std::string& pathWithoutExtension) const {
-    writeAtomically(pathWithoutExtension + ".dot", dumpDot());
-    writeAtomically(pathWithoutExtension + ".json", dumpJson());
+    core::writeFileAtomically(pathWithoutExtension + ".dot", dumpDot());
+    core::writeFileAtomically(pathWithoutExtension + ".json", dumpJson());
 }
 
 } // namespace hush::graph

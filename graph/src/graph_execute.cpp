@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include <hush/graph/render_graph.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "compiled_graph.hpp"
 #include "frame_slot.hpp"

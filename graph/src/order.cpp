@@ -3,7 +3,7 @@
 #include <queue>
 
 #include <hush/graph/compile_steps.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "dependencies.hpp"
 

@@ -1,7 +1,7 @@
 // RenderGraph: declaration and introspection. Compiling lives in graph_compile.cpp,
 // executing in graph_execute.cpp, dumping in graph_dump.cpp.
 #include <hush/graph/render_graph.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "compiled_graph.hpp"
 #include "frame_slot.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 
 #include <hush/graph/compile_steps.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "dependencies.hpp"
 

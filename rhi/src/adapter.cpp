@@ -118,6 +118,14 @@ std::shared_ptr<DeviceImpl> createDeviceImpl(const std::shared_ptr<InstanceImpl>
 
 using namespace detail;
 
+std::vector<std::pair<std::string, std::string>> AdapterInfo::reportFields() const {
+    return {{"name", name},
+            {"type", std::string(toString(type))},
+            {"driver", driverName},
+            {"driver_info", driverInfo},
+            {"api_version", apiVersionString()}};
+}
+
 std::string AdapterInfo::apiVersionString() const {
     return std::to_string(VK_API_VERSION_MAJOR(apiVersion)) + "." + std::to_string(VK_API_VERSION_MINOR(apiVersion)) +
            "." + std::to_string(VK_API_VERSION_PATCH(apiVersion));

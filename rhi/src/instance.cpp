@@ -90,14 +90,14 @@ void* openLoader(const std::string& requested) {
     void* handle = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
         const char* why = dlerror();
-        fail(ErrorKind::NoVulkanLoader,
+        fail(ErrorKind::NoLoader,
              "could not open the Vulkan loader '" + name + "' (" + (why ? why : "unknown reason") +
                  "). Install it (Debian: apt-get install libvulkan1 mesa-vulkan-drivers) or set "
                  "HUSH_VULKAN_LOADER to its path.");
     }
     auto getProc = reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(handle, "vkGetInstanceProcAddr"));
     if (!getProc)
-        fail(ErrorKind::NoVulkanLoader, "'" + name + "' is not a Vulkan loader: it has no vkGetInstanceProcAddr.");
+        fail(ErrorKind::NoLoader, "'" + name + "' is not a Vulkan loader: it has no vkGetInstanceProcAddr.");
     volkInitializeCustom(getProc);
     return handle;
 }

@@ -2,7 +2,7 @@
 #include <algorithm>
 
 #include <hush/rhi/bind_group.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/rhi/format.hpp>
 #include <hush/rhi/instance.hpp>
 #include <hush/rhi/resource_state.hpp>

@@ -12,7 +12,7 @@
 #include <volk.h>
 
 #include <hush/rhi/device.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::rhi::detail {
 

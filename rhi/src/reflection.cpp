@@ -5,7 +5,7 @@
 
 #include <spirv_cross/spirv_cross.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/rhi/shader.hpp>
 
 namespace hush::rhi {

@@ -1,4 +1,4 @@
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/rhi/shader_library.hpp>
 
 #include <string>

@@ -42,7 +42,7 @@ void checkVk(VkResult result, const std::string& what) {
     case VK_ERROR_OUT_OF_HOST_MEMORY:
         fail(ErrorKind::OutOfMemory, what + " failed: out of host memory (" + code + ").");
     default:
-        fail(ErrorKind::Vulkan, what + " failed with " + code + ".");
+        fail(ErrorKind::Driver, what + " failed with " + code + ".");
     }
 }
 

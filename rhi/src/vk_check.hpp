@@ -4,7 +4,7 @@
 
 #include <volk.h>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::rhi::detail {
 

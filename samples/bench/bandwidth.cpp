@@ -39,6 +39,7 @@ struct Options {
     uint32_t runs = 20;
     uint32_t warmup = 3;
     std::string output = "bench-results/bandwidth.json";
+    std::string commandLine;   // as given, for the results file
     AdapterRequest adapter;
 };
 
@@ -64,9 +65,9 @@ bool parseOptions(int argc, char** argv, Options& options) {
             return argv[++i];
         };
         if (arg == "--runs") {
-            options.runs = parseCount(arg, value(), 1);
+            options.runs = core::parseCount(value(), arg, 1);
         } else if (arg == "--warmup") {
-            options.warmup = parseCount(arg, value(), 0);
+            options.warmup = core::parseCount(value(), arg, 0);
         } else if (arg == "--output") {
             options.output = value();
         } else if (arg == "--adapter") {
@@ -119,16 +120,8 @@ std::string toJson(const Options& options, const AdapterInfo& adapter, const std
         std::snprintf(text, sizeof text, "%.6g", value);
         return std::string(text);
     };
-    std::string json = "{\n";
-    json += "  \"benchmark\": \"bandwidth\",\n";
-    json += "  \"date\": " + jsonString(utcTimestamp()) + ",\n";
-    json += "  \"hush_version\": " + jsonString(HUSH_VERSION) + ",\n";
-    json += "  \"adapter\": {\"name\": " + jsonString(adapter.name) + ", \"type\": " +
-            jsonString(toString(adapter.type)) + ", \"driver\": " + jsonString(adapter.driverName) +
-            ", \"driver_info\": " + jsonString(adapter.driverInfo) + ", \"api_version\": " +
-            jsonString(adapter.apiVersionString()) + "},\n";
-    json += "  \"host\": {\"cpu\": " + jsonString(hostCpuName()) +
-            ", \"hardware_threads\": " + std::to_string(std::thread::hardware_concurrency()) + "},\n";
+    std::string json = resultsHead({.program = "bandwidth", .commandLine = options.commandLine,
+                                    .device = adapter.reportFields(), .validation = false});
     json += "  \"runs\": " + std::to_string(options.runs) + ",\n";
     json += "  \"warmup\": " + std::to_string(options.warmup) + ",\n";
     json += "  \"results\": [";
@@ -191,7 +184,7 @@ int run(const Options& options) {
     }
 
     printTable(rows);
-    writeFileAtomically(options.output, toJson(options, info, rows));
+    writeResults(options.output, toJson(options, info, rows));
     std::printf("[bandwidth] wrote %s\n", options.output.c_str());
     if (!allVerified) {
         std::fprintf(stderr, "hush-bench-bandwidth: a copy did not reproduce its source; figures are suspect\n");
@@ -211,6 +204,7 @@ int run(const Options& options) {
 int main(int argc, char** argv) {
     return hush::bench::guardedMain("hush-bench-bandwidth", [&] {
         hush::bench::Options options;
+        options.commandLine = hush::bench::commandLineOf(argc, argv);
         if (!hush::bench::parseOptions(argc, argv, options)) {
             std::printf("%.*s", int(hush::bench::kUsage.size()), hush::bench::kUsage.data());
             return 0;

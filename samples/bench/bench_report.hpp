@@ -1,13 +1,16 @@
 #pragma once
 // What every hush benchmark needs to report its figures: order statistics of
-// repeated timings, a description of the machine, and result files written so
-// that an interrupted run never leaves a half-written one behind.
+// repeated timings, the run's environment (core/run_environment.hpp) at the head of
+// each results file, and result files written atomically (core/atomic_file.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <hush/core/arguments.hpp>
+#include <hush/core/run_environment.hpp>
 
 namespace hush::bench {
 
@@ -21,23 +24,18 @@ struct Stats {
 // Throws hush::Error (InvalidArgument) for an empty sample.
 Stats summarize(std::vector<double> samples);
 
-// The CPU's model name from /proc/cpuinfo ("unknown" when unavailable).
-std::string hostCpuName();
-
-// Now, in UTC, as ISO 8601: "2024-05-01T12:34:56Z".
-std::string utcTimestamp();
-
 // `text` as a JSON string literal, quotes included.
 std::string jsonString(std::string_view text);
 
-// Writes `contents` to a temporary file beside `path`, then renames it over
-// `path` (atomic on one file system). Creates the parent directory. Throws
-// hush::Error (NotFound) naming the path when it cannot.
-void writeFileAtomically(const std::filesystem::path& path, std::string_view contents);
+// The head of a results file: "{\n  \"environment\": {...},\n" (the caller adds
+// its own fields and the closing brace).
+std::string resultsHead(const core::RunEnvironment& environment);
 
-// A command-line count: the whole text a number >= minimum, else hush::Error
-// (InvalidArgument) naming the flag and the text.
-uint32_t parseCount(std::string_view flag, std::string_view text, uint32_t minimum);
+// The program's arguments joined by spaces, for the results file.
+std::string commandLineOf(int argc, char** argv);
+
+// Creates the parent folder, then writes `contents` atomically.
+void writeResults(const std::filesystem::path& path, std::string_view contents);
 
 // Runs a benchmark's body and turns what it throws into the shared exit codes:
 // 2 with "<program>: error (<kind>): ..." for a hush::Error, 2 with "internal

@@ -12,7 +12,7 @@
 #include <string_view>
 
 #include <hush/passes/chain_file.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "chain_bench.hpp"
 
@@ -56,25 +56,10 @@ constexpr std::string_view kUsage =
     "  --adapter TEXT          the first adapter whose name contains TEXT (default:\n"
     "                          HUSH_ADAPTER)\n";
 
-std::vector<std::string> splitList(std::string_view text) {
-    std::vector<std::string> items;
-    size_t start = 0;
-    while (start <= text.size()) {
-        const size_t comma = std::min(text.find(',', start), text.size());
-        if (comma > start) items.emplace_back(text.substr(start, comma - start));
-        start = comma + 1;
-    }
-    return items;
-}
-
 // "WxH", or "N" for N x N.
 Extent2D parseSize(std::string_view flag, std::string_view text) {
-    const size_t x = text.find('x');
-    if (x == std::string_view::npos) {
-        const uint32_t n = parseCount(flag, text, 1);
-        return {n, n};
-    }
-    return {parseCount(flag, text.substr(0, x), 1), parseCount(flag, text.substr(x + 1), 1)};
+    const auto size = core::parseSize(text, flag, 16384, /*square=*/true);
+    return {size.width, size.height};
 }
 
 void applyQuick(Options& o) {
@@ -90,10 +75,9 @@ void applyQuick(Options& o) {
 
 // Returns false when the program should just print the usage and stop.
 bool parseOptions(int argc, char** argv, Options& o) {
-    for (int i = 1; i < argc; ++i) {
-        o.commandLine += (i > 1 ? " " : "") + std::string(argv[i]);
+    o.commandLine = commandLineOf(argc, argv);
+    for (int i = 1; i < argc; ++i)
         if (std::string_view(argv[i]) == "--quick") applyQuick(o);
-    }
     for (int i = 1; i < argc; ++i) {
         const std::string_view arg = argv[i];
         if (arg == "--help" || arg == "-h") return false;
@@ -104,27 +88,27 @@ bool parseOptions(int argc, char** argv, Options& o) {
         if (arg == "--quick") {
             continue;   // applied above
         } else if (arg == "--chains") {
-            o.chains = splitList(value());
+            o.chains = core::splitList(value());
         } else if (arg == "--frames") {
-            o.frames = parseCount(arg, value(), 1);
+            o.frames = core::parseCount(value(), arg, 1);
         } else if (arg == "--warmup") {
-            o.warmup = parseCount(arg, value(), 0);
+            o.warmup = core::parseCount(value(), arg, 0);
         } else if (arg == "--sizes") {
             o.sizes.clear();
-            for (const auto& item : splitList(value())) o.sizes.push_back(parseSize(arg, item));
+            for (const auto& item : core::splitList(value())) o.sizes.push_back(parseSize(arg, item));
         } else if (arg == "--probe-runs") {
-            o.probeRuns = parseCount(arg, value(), 1);
+            o.probeRuns = core::parseCount(value(), arg, 1);
         } else if (arg == "--quality-size") {
             o.qualitySize = parseSize(arg, value());
         } else if (arg == "--quality-frames") {
-            o.qualityFrames = parseCount(arg, value(), 2);
+            o.qualityFrames = core::parseCount(value(), arg, 2);
         } else if (arg == "--reference-frames") {
             o.referenceFrames.clear();
-            for (const auto& item : splitList(value())) o.referenceFrames.push_back(parseCount(arg, item, 0));
+            for (const auto& item : core::splitList(value())) o.referenceFrames.push_back(core::parseCount(item, arg, 0));
         } else if (arg == "--reference-spp") {
-            o.referenceSpp = parseCount(arg, value(), 1);
+            o.referenceSpp = core::parseCount(value(), arg, 1);
         } else if (arg == "--scenes") {
-            o.scenes = splitList(value());
+            o.scenes = core::splitList(value());
         } else if (arg == "--skip-timing") {
             o.timing = false;
         } else if (arg == "--skip-quality") {
@@ -150,7 +134,7 @@ int run(const Options& options) {
     Adapter adapter = instance.requestAdapter(options.adapter);
     const AdapterInfo& info = adapter.info();
     std::printf("[chains] adapter: %s (%s, %s); host CPU: %s\n", info.name.c_str(), info.driverName.c_str(),
-                info.driverInfo.c_str(), hostCpuName().c_str());
+                info.driverInfo.c_str(), core::hostCpuName().c_str());
     std::printf("[chains] validation %s\n",
                 instance.validationEnabled() ? "on (slower: timings not representative)" : "off");
     Device device = adapter.createDevice({.label = "hush-bench-chains"});
@@ -193,7 +177,7 @@ int run(const Options& options) {
         printMemory(timings);
     }
     if (options.quality) printQuality(quality, options);
-    writeFileAtomically(options.output,
+    writeResults(options.output,
                         toJson(options, info, instance.validationEnabled(), rooflines, timings, quality));
     std::printf("\n[chains] wrote %s\n", options.output.c_str());
     if (suspect) {

@@ -104,14 +104,6 @@ std::vector<tracer::Channel> denoiserChannels();
 void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame);
 // Frame 0 of the cornell box's camera path at 1 spp, with denoiserChannels().
 tracer::Frame renderTimingFrame(Extent2D size);
-// CPU time counters (clock ticks) of the whole host and of this process, from
-// /proc/stat and /proc/self/stat; all zero where unavailable.
-struct CpuTimes {
-    uint64_t hostBusy = 0, hostTotal = 0, self = 0;
-};
-CpuTimes sampleCpuTimes();
-// Others' share of the host's CPU time between two samples, -1 when unknown.
-double otherCpuShare(const CpuTimes& before, const CpuTimes& after);
 Roofline measureRoofline(const rhi::Device& device, Extent2D size, uint32_t runs);
 TimingResult measureChainTiming(const rhi::Device& device, const std::string& chain, const tracer::Frame& frame,
                                 const Roofline& roofline, const Options& options);

@@ -10,7 +10,7 @@
 #include <hush/passes/chain_file.hpp>
 #include <hush/passes/common/tonemap.hpp>
 #include <hush/passes/metrics/metrics_evaluator.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/builtin_scenes.hpp>
 #include <hush/tracer/renderer.hpp>
 

@@ -73,18 +73,8 @@ void printQuality(const std::vector<QualityRow>& rows, const Options& o) {
 std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation,
                    const std::vector<Roofline>& rooflines, const std::vector<TimingResult>& timings,
                    const std::vector<QualityRow>& quality) {
-    std::string json = "{\n";
-    json += "  \"benchmark\": \"chains\",\n";
-    json += "  \"date\": " + jsonString(utcTimestamp()) + ",\n";
-    json += "  \"hush_version\": " + jsonString(HUSH_VERSION) + ",\n";
-    json += "  \"command_line\": " + jsonString(o.commandLine) + ",\n";
-    json += "  \"adapter\": {\"name\": " + jsonString(adapter.name) +
-            ", \"type\": " + jsonString(toString(adapter.type)) + ", \"driver\": " + jsonString(adapter.driverName) +
-            ", \"driver_info\": " + jsonString(adapter.driverInfo) +
-            ", \"api_version\": " + jsonString(adapter.apiVersionString()) + "},\n";
-    json += "  \"host\": {\"cpu\": " + jsonString(hostCpuName()) +
-            ", \"hardware_threads\": " + std::to_string(std::thread::hardware_concurrency()) + "},\n";
-    json += std::string("  \"validation\": ") + (validation ? "true" : "false") + ",\n";
+    std::string json = resultsHead({.program = "chains", .commandLine = o.commandLine,
+                                    .device = adapter.reportFields(), .validation = validation});
     json += "  \"warmup\": " + std::to_string(o.warmup) + ", \"frames\": " + std::to_string(o.frames) +
             ", \"probe_runs\": " + std::to_string(o.probeRuns) + ",\n";
 

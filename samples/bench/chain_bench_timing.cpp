@@ -10,7 +10,7 @@
 
 #include <hush/graph/compile_steps.hpp>
 #include <hush/passes/chain_file.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/builtin_scenes.hpp>
 #include <hush/tracer/renderer.hpp>
 
@@ -92,43 +92,12 @@ tracer::Frame renderTimingFrame(Extent2D size) {
     return renderer.render(0, settings);
 }
 
-CpuTimes sampleCpuTimes() {
-    CpuTimes t;
-    std::ifstream stat("/proc/stat");
-    std::string label;
-    if (stat >> label && label == "cpu") {
-        // user nice system idle iowait irq softirq steal (guest time is inside user)
-        uint64_t field[8] = {};
-        for (auto& f : field) stat >> f;
-        for (uint64_t f : field) t.hostTotal += f;
-        t.hostBusy = t.hostTotal - field[3] - field[4];
-    }
-    // Fields 14 and 15 of /proc/self/stat: utime and stime of every thread (lavapipe's
-    // included). Field 2, the command name, is in parentheses and may hold spaces.
-    std::ifstream self("/proc/self/stat");
-    std::string line;
-    if (std::getline(self, line) && line.rfind(')') != std::string::npos) {
-        std::istringstream rest(line.substr(line.rfind(')') + 2));
-        std::string skip;
-        for (int i = 3; i <= 13; ++i) rest >> skip;
-        uint64_t utime = 0, stime = 0;
-        if (rest >> utime >> stime) t.self = utime + stime;
-    }
-    return t;
-}
-
-double otherCpuShare(const CpuTimes& before, const CpuTimes& after) {
-    if (after.hostTotal <= before.hostTotal || after.self < before.self) return -1.0;
-    const double others = double(after.hostBusy - before.hostBusy) - double(after.self - before.self);
-    return std::clamp(others / double(after.hostTotal - before.hostTotal), 0.0, 1.0);
-}
-
 Roofline measureRoofline(const rhi::Device& device, Extent2D size, uint32_t runs) {
     const ProbeCase probe{"texture rgba32f", ProbeKind::Texture, rhi::Format::RGBA32Float, size, 16};
-    const CpuTimes before = sampleCpuTimes();
+    const core::CpuTimes before = core::sampleCpuTimes();
     const ProbeTimings timings = runDeviceProbe(device, probe, 3, runs);
     Roofline roofline{.size = size, .ms = summarize(timings.ms), .timer = timings.timer,
-                      .verified = timings.verified, .otherCpuShare = otherCpuShare(before, sampleCpuTimes())};
+                      .verified = timings.verified, .otherCpuShare = core::otherCpuShare(before, core::sampleCpuTimes())};
     roofline.gbps = gigabytesPerSecond(2 * probe.bytes(), roofline.ms.median);
     return roofline;
 }
@@ -157,7 +126,7 @@ TimingResult measureChainTiming(const rhi::Device& device, const std::string& ch
     // pixel values, and the histories are valid from the second frame on.
     std::map<std::string, std::vector<double>> passMs;
     std::vector<double> totalMs, recordMs;
-    const CpuTimes cpuBefore = sampleCpuTimes();
+    const core::CpuTimes cpuBefore = core::sampleCpuTimes();
     for (uint32_t f = 0; f < options.warmup + options.frames; ++f) {
         runner.run();
         const auto& t = runner.graph().timings();
@@ -169,7 +138,7 @@ TimingResult measureChainTiming(const rhi::Device& device, const std::string& ch
         totalMs.push_back(t.totalGpuMs);
         recordMs.push_back(t.cpuRecordMs);
     }
-    result.otherCpuShare = otherCpuShare(cpuBefore, sampleCpuTimes());
+    result.otherCpuShare = core::otherCpuShare(cpuBefore, core::sampleCpuTimes());
     result.totalGpuMs = summarize(totalMs);
     result.cpuRecordMs = summarize(recordMs);
     result.nonFiniteOutput = countNonFinite(runner.readDisplay()) + countNonFinite(runner.readRadiance());

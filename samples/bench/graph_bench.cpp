@@ -69,11 +69,11 @@ bool parseOptions(int argc, char** argv, Options& options) {
             return argv[++i];
         };
         if (arg == "--compiles") {
-            options.compiles = parseCount(arg, value(), 1);
+            options.compiles = core::parseCount(value(), arg, 1);
         } else if (arg == "--frames") {
-            options.frames = parseCount(arg, value(), 1);
+            options.frames = core::parseCount(value(), arg, 1);
         } else if (arg == "--warmup") {
-            options.warmup = parseCount(arg, value(), 0);
+            options.warmup = core::parseCount(value(), arg, 0);
         } else if (arg == "--output") {
             options.output = value();
         } else if (arg == "--adapter") {
@@ -431,7 +431,7 @@ int run(const Options& options) {
     const MemoryRow memory = benchMemory(device, copy, 20, {1280, 720});
 
     printTables(compiles, overheads, memory);
-    writeFileAtomically(options.output,
+    writeResults(options.output,
                         toJson(options, info, instance.validationEnabled(), compiles, overheads, memory));
     std::printf("[graph] wrote %s\n", options.output.c_str());
     if (!verified) {
@@ -451,6 +451,7 @@ int run(const Options& options) {
 int main(int argc, char** argv) {
     return hush::bench::guardedMain("hush-bench-graph", [&] {
         hush::bench::graph_bench::Options options;
+        options.commandLine = hush::bench::commandLineOf(argc, argv);
         if (!hush::bench::parseOptions(argc, argv, options)) {
             std::printf("%.*s", int(hush::bench::kUsage.size()), hush::bench::kUsage.data());
             return 0;

@@ -23,6 +23,7 @@ struct Options {
     uint32_t frames = 60;
     uint32_t warmup = 5;
     std::string output = "bench-results/graph.json";
+    std::string commandLine;   // as given, for the results file
     AdapterRequest adapter;
 };
 

@@ -57,17 +57,8 @@ std::string stepsJson(const CompileRow& r) {
 std::string toJson(const Options& options, const AdapterInfo& adapter, bool validation,
                    const std::vector<CompileRow>& compiles, const std::vector<OverheadResult>& overheads,
                    const MemoryRow& m) {
-    std::string json = "{\n";
-    json += "  \"benchmark\": \"graph\",\n";
-    json += "  \"date\": " + jsonString(utcTimestamp()) + ",\n";
-    json += "  \"hush_version\": " + jsonString(HUSH_VERSION) + ",\n";
-    json += "  \"adapter\": {\"name\": " + jsonString(adapter.name) +
-            ", \"type\": " + jsonString(toString(adapter.type)) + ", \"driver\": " + jsonString(adapter.driverName) +
-            ", \"driver_info\": " + jsonString(adapter.driverInfo) +
-            ", \"api_version\": " + jsonString(adapter.apiVersionString()) + "},\n";
-    json += "  \"host\": {\"cpu\": " + jsonString(hostCpuName()) +
-            ", \"hardware_threads\": " + std::to_string(std::thread::hardware_concurrency()) + "},\n";
-    json += std::string("  \"validation\": ") + (validation ? "true" : "false") + ",\n";
+    std::string json = resultsHead({.program = "graph", .commandLine = options.commandLine,
+                                    .device = adapter.reportFields(), .validation = validation});
     json += "  \"compiles\": " + std::to_string(options.compiles) + ",\n";
     json += "  \"frames\": " + std::to_string(options.frames) + ",\n";
     json += "  \"warmup\": " + std::to_string(options.warmup) + ",\n";

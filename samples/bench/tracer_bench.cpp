@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/builtin_scenes.hpp>
 #include <hush/tracer/renderer.hpp>
 
@@ -24,6 +24,7 @@ struct Options {
     uint32_t frames = 5;
     uint32_t referenceSpp = 64;
     std::string output = "bench-results/tracer.json";
+    std::string commandLine;   // as given, for the results file
 };
 
 struct Row {
@@ -42,8 +43,8 @@ Options parse(int argc, char** argv) {
             if (i + 1 >= argc) throw Error(ErrorKind::InvalidArgument, std::string(name) + " needs a value");
             return std::string(argv[++i]);
         };
-        if (a == "--frames") o.frames = bench::parseCount("--frames", value("--frames"), 1);
-        else if (a == "--reference-spp") o.referenceSpp = bench::parseCount("--reference-spp", value("--reference-spp"), 0);
+        if (a == "--frames") o.frames = core::parseCount(value("--frames"), "--frames", 1);
+        else if (a == "--reference-spp") o.referenceSpp = core::parseCount(value("--reference-spp"), "--reference-spp", 0);
         else if (a == "--output") o.output = value("--output");
         else if (a == "--help") {
             std::printf("usage: hush-bench-tracer [--frames N (5)] [--reference-spp N (64)] [--output PATH]\n");
@@ -61,9 +62,10 @@ double seconds(std::chrono::steady_clock::time_point since) {
 
 int main(int argc, char** argv) {
     return bench::guardedMain("hush-bench-tracer", [&] {
-        const Options options = parse(argc, argv);
+        Options options = parse(argc, argv);
+        options.commandLine = bench::commandLineOf(argc, argv);
         std::vector<Row> rows;
-        std::printf("hush-bench-tracer on %s, %u threads\n\n", bench::hostCpuName().c_str(),
+        std::printf("hush-bench-tracer on %s, %u threads\n\n", core::hostCpuName().c_str(),
                     std::max(1u, std::thread::hardware_concurrency()));
         std::printf("%-14s %-10s %12s %10s %10s %10s %16s\n", "scene", "size", "ms/frame", "min", "max", "Mrays/s",
                     "reference s");
@@ -102,9 +104,9 @@ int main(int argc, char** argv) {
                 rows.push_back(row);
             }
         }
-        std::string json = "{\n  \"benchmark\": \"tracer\",\n  \"date\": " + bench::jsonString(bench::utcTimestamp()) +
-                           ",\n  \"cpu\": " + bench::jsonString(bench::hostCpuName()) + ",\n  \"threads\": " +
-                           std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
+        std::string json = bench::resultsHead({.program = "tracer", .commandLine = options.commandLine, .device = {},
+                                               .validation = false}) +
+                           "  \"threads\": " + std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
                            ",\n  \"framesPerSetting\": " + std::to_string(options.frames) + ",\n  \"referenceSpp\": " +
                            std::to_string(options.referenceSpp) + ",\n  \"rows\": [\n";
         for (size_t i = 0; i < rows.size(); ++i) {
@@ -118,7 +120,7 @@ int main(int argc, char** argv) {
             json += line;
         }
         json += "  ]\n}\n";
-        bench::writeFileAtomically(options.output, json);
+        bench::writeResults(options.output, json);
         std::printf("\nwritten to %s\n", options.output.c_str());
         return 0;
     });

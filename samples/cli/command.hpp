@@ -5,7 +5,16 @@
 #include <string>
 #include <string_view>
 
+#include <hush/core/arguments.hpp>
+#include <hush/core/atomic_file.hpp>
+
 namespace hush::cli {
+
+// Every subcommand parses its options with core's helpers.
+using core::parseCount;
+using core::parseSize;
+using core::splitList;
+using core::takeOption;
 
 // Exit codes shared by every subcommand (documented in `hush --help`).
 inline constexpr int kExitOk = 0;
@@ -25,16 +34,6 @@ const Command& infoCommand();
 const Command& renderCommand();
 const Command& denoiseCommand();
 const Command& demoCommand();
-
-// Takes the value of an option given as "--name value" or "--name=value" at
-// args[i] (advancing i past a separate value). Returns false if args[i] is not
-// that option; throws hush::Error (InvalidArgument) if the value is missing.
-bool takeOption(std::span<const std::string_view> args, size_t& i, std::string_view name,
-                std::string& value);
-
-// Writes `text` to `path` through a temporary file and a rename, so a failed run
-// never leaves a half-written file over a user's; throws hush::Error naming the path.
-void writeTextFile(const std::string& path, const std::string& text);
 
 // hush::Error (InvalidArgument) for an argument a subcommand does not know.
 [[noreturn]] void unknownArgument(std::string_view command, std::string_view arg);

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <thread>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/frame_io.hpp>
 
 #include "command.hpp"
@@ -66,7 +66,11 @@ int runDemo(std::span<const std::string_view> args) {
         std::string v;
         if (takeOption(args, i, "--out", v)) out = v;
         else if (takeOption(args, i, "--scene", v)) sceneName = v;
-        else if (takeOption(args, i, "--size", v)) parseSize(v, "--size", settings.width, settings.height);
+        else if (takeOption(args, i, "--size", v)) {
+            const auto size = parseSize(v, "--size");
+            settings.width = size.width;
+            settings.height = size.height;
+        }
         else if (takeOption(args, i, "--frames", v)) sequence.frames = parseCount(v, "--frames", 1, 100000);
         else if (takeOption(args, i, "--reference-every", v)) sequence.referenceEvery = parseCount(v, "--reference-every", 1, 100000);
         else if (takeOption(args, i, "--reference-spp", v)) settings.referenceSpp = parseCount(v, "--reference-spp", 1, 1u << 20);

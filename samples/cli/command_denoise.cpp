@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include <hush/passes/chain_file.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/rhi/rhi.hpp>
 #include <hush/tracer/frame_io.hpp>
 
@@ -105,7 +105,7 @@ int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterR
     const auto result = runDenoiseJob(device, options);
     std::fputs(formatReportTables(result).c_str(), stdout);
     const auto reportPath = (std::filesystem::path(options.outFolder) / "report.json").string();
-    writeTextFile(reportPath, reportJson(result, adapter.info().name));
+    core::writeFileAtomically(reportPath, reportJson(result, adapter.info().name));
     std::printf("\nwrote %s and the images under %s/\n", reportPath.c_str(), options.outFolder.c_str());
     return kExitOk;
 }

@@ -7,6 +7,8 @@
 
 #include <hush/rhi/rhi.hpp>
 
+#include <hush/core/run_environment.hpp>
+
 #include "command.hpp"
 #include "graph_selfcheck.hpp"
 #include "selfcheck.hpp"
@@ -110,7 +112,7 @@ int runInfo(std::span<const std::string_view> args) {
         chooseError = error.what();
     }
 
-    std::printf("hush %s: %zu Vulkan adapter%s (validation %s)\n\n", HUSH_VERSION, adapters.size(),
+    std::printf("hush %s: %zu Vulkan adapter%s (validation %s)\n\n", std::string(core::hushVersion()).c_str(), adapters.size(),
                 adapters.size() == 1 ? "" : "s", instance.validationEnabled() ? "on" : "off");
     for (const Adapter& adapter : adapters) {
         printAdapter(adapter, chosen && adapter.index() == chosen.index());
@@ -159,8 +161,8 @@ int runInfo(std::span<const std::string_view> args) {
         line("GPU time", text);
     }
     if (!dumpPath.empty()) {
-        writeTextFile(dumpPath + ".dot", graphCheck.dot);
-        writeTextFile(dumpPath + ".json", graphCheck.json);
+        core::writeFileAtomically(dumpPath + ".dot", graphCheck.dot);
+        core::writeFileAtomically(dumpPath + ".json", graphCheck.json);
         line("graph written to", dumpPath + ".dot, " + dumpPath + ".json");
     }
     passed = passed && graphCheck.passed();

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <thread>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/frame_io.hpp>
 #include <hush/tracer/renderer.hpp>
 
@@ -57,7 +57,11 @@ int runRender(std::span<const std::string_view> args) {
         if (takeOption(args, i, "--scene", v)) sceneName = v;
         else if (takeOption(args, i, "--frames", v)) frames = parseCount(v, "--frames", 1, 100000);
         else if (takeOption(args, i, "--first", v)) first = parseCount(v, "--first", 0, 1000000);
-        else if (takeOption(args, i, "--size", v)) parseSize(v, "--size", settings.width, settings.height);
+        else if (takeOption(args, i, "--size", v)) {
+            const auto size = parseSize(v, "--size");
+            settings.width = size.width;
+            settings.height = size.height;
+        }
         else if (takeOption(args, i, "--reference-spp", v)) settings.referenceSpp = parseCount(v, "--reference-spp", 0, 1u << 20);
         else if (takeOption(args, i, "--reference-every", v)) referenceEvery = parseCount(v, "--reference-every", 1, 100000);
         else if (takeOption(args, i, "--channels", v)) settings.channels = tracer::parseChannelList(v);

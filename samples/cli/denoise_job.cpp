@@ -7,7 +7,7 @@
 
 #include <hush/passes/chain_file.hpp>
 #include <hush/passes/common/tonemap.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/frame_io.hpp>
 
 #include "denoise_run.hpp"

@@ -1,6 +1,6 @@
 #include "denoise_run.hpp"
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::cli {
 

@@ -8,7 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
+#include <hush/core/run_environment.hpp>
 
 #include "command.hpp"
 
@@ -37,7 +38,7 @@ void printUsage(std::FILE* out) {
                  "       hush <command> --help\n"
                  "\n"
                  "commands:\n",
-                 HUSH_VERSION);
+                 std::string(core::hushVersion()).c_str());
     for (const Command* command : commands()) {
         std::fprintf(out, "  %-10.*s %.*s\n", int(command->name.size()), command->name.data(),
                      int(command->summary.size()), command->summary.data());
@@ -66,7 +67,7 @@ int dispatch(std::span<const std::string_view> args) {
         return kExitOk;
     }
     if (args[0] == "--version") {
-        std::printf("hush %s\n", HUSH_VERSION);
+        std::printf("hush %s\n", std::string(core::hushVersion()).c_str());
         return kExitOk;
     }
     for (const Command* command : commands()) {
@@ -88,26 +89,6 @@ int dispatch(std::span<const std::string_view> args) {
 }
 
 } // namespace
-
-bool takeOption(std::span<const std::string_view> args, size_t& i, std::string_view name,
-                std::string& value) {
-    std::string_view arg = args[i];
-    if (arg.substr(0, name.size()) != name) {
-        return false;
-    }
-    if (arg.size() > name.size()) {
-        if (arg[name.size()] != '=') {
-            return false;   // a longer option that merely starts with `name`
-        }
-        value = std::string(arg.substr(name.size() + 1));
-        return true;
-    }
-    if (i + 1 >= args.size()) {
-        throw Error(ErrorKind::InvalidArgument, "option " + std::string(name) + " needs a value");
-    }
-    value = std::string(args[++i]);
-    return true;
-}
 
 void unknownArgument(std::string_view command, std::string_view arg) {
     throw Error(ErrorKind::InvalidArgument, "unknown argument '" + std::string(arg) + "' for hush " +

@@ -1,13 +1,13 @@
 #include "png_file.hpp"
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
+#include <stdexcept>
 
 #include <png.h>
-#include <unistd.h>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/atomic_file.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::cli {
 
@@ -50,24 +50,14 @@ void writePng(const std::string& path, uint32_t width, uint32_t height, std::spa
     if (width == 0 || height == 0 || rgb.size() != size_t(width) * height * 3)
         throw Error(ErrorKind::InvalidArgument, "cannot write '" + path + "': image data does not match " +
                                                     std::to_string(width) + "x" + std::to_string(height) + " RGB");
-    const std::filesystem::path target(path);
-    if (target.has_parent_path() && !std::filesystem::is_directory(target.parent_path()))
-        throw Error(ErrorKind::NotFound,
-                    "cannot write '" + path + "': the folder '" + target.parent_path().string() + "' does not exist");
-    const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-    FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) throw Error(ErrorKind::InvalidArgument, "cannot write '" + temporary + "'");
-    std::string libpngMessage;
-    std::string failure = writePngStream(file, width, height, rgb.data(), &libpngMessage);
-    if (std::fclose(file) != 0 && failure.empty()) failure = "could not finish writing (disk full?)";
-    if (failure.empty()) {
-        std::error_code error;
-        std::filesystem::rename(temporary, target, error);
-        if (!error) return;
-        failure = error.message();
-    }
-    std::remove(temporary.c_str());
-    throw Error(ErrorKind::InvalidArgument, "cannot write '" + path + "': " + failure);
+    core::writeAtomically(path, [&](const std::string& temporary) {
+        FILE* file = std::fopen(temporary.c_str(), "wb");
+        if (!file) throw std::runtime_error("cannot create '" + temporary + "'");
+        std::string libpngMessage;
+        std::string failure = writePngStream(file, width, height, rgb.data(), &libpngMessage);
+        if (std::fclose(file) != 0 && failure.empty()) failure = "could not finish writing (disk full?)";
+        if (!failure.empty()) throw std::runtime_error(failure);
+    });
 }
 
 } // namespace hush::cli

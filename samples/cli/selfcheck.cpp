@@ -125,7 +125,7 @@ SelfCheckResult runSelfCheck(const Device& device) {
         result.gpuMs = timestamps.elapsedMs(0, 1);
     }
     if (yGpu.size() != n || imageGpu.size() != image.size()) {
-        throw Error(ErrorKind::Vulkan, "self-check: read back " + std::to_string(yGpu.size()) + " floats of y and " +
+        throw Error(ErrorKind::Driver, "self-check: read back " + std::to_string(yGpu.size()) + " floats of y and " +
                                            std::to_string(imageGpu.size()) + " of the image, expected " +
                                            std::to_string(n) + " and " + std::to_string(image.size()));
     }

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/obj_loader.hpp>
 
 namespace hush::fuzz {

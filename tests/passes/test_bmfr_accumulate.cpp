@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include <hush/passes/bmfr/accumulate.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "reference/bmfr_accumulate_reference.hpp"
 #include "reference/reproject_reference.hpp"

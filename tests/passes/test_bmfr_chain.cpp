@@ -10,7 +10,7 @@
 #include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/chain_file.hpp>
 #include <hush/passes/chain_runner.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "chain_test_util.hpp"
 #include "support/gpu_context.hpp"

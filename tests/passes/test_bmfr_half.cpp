@@ -14,7 +14,7 @@
 #include <hush/passes/chain_file.hpp>
 #include <hush/passes/eaw/chain.hpp>
 #include <hush/passes/metrics/metrics_evaluator.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "chain_test_util.hpp"
 #include "pass_test_util.hpp"

@@ -14,12 +14,12 @@ using namespace hush::test;
 using hush::ErrorKind;
 using Catch::Matchers::Contains;
 
-TEST_CASE("errors: a missing Vulkan loader is NoVulkanLoader naming the library", "[errors]") {
+TEST_CASE("errors: a missing Vulkan loader is NoLoader naming the library", "[errors]") {
     const auto error = errorFrom([] {
         Instance::create({.validation = false, .validationFromEnvironment = false, .loaderLibrary = "libdoes-not-exist.so"});
     });
     REQUIRE(error);
-    CHECK(error->kind() == ErrorKind::NoVulkanLoader);
+    CHECK(error->kind() == ErrorKind::NoLoader);
     CHECK_THAT(error->what(), Contains("libdoes-not-exist.so"));
 }
 
@@ -226,7 +226,7 @@ TEST_CASE("errors: a buffer larger than device memory is OutOfMemory", "[errors]
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(validation);
 }
 
-TEST_CASE("errors: Vulkan results translate to DeviceLost OutOfMemory and Vulkan", "[errors]") {
+TEST_CASE("errors: Vulkan results translate to DeviceLost OutOfMemory and Driver", "[errors]") {
     // A lost device cannot be provoked on lavapipe (it never loses one, and there is no
     // portable way to hang or reset a GPU from a test), so the one function every Vulkan
     // call's result goes through, detail::checkVk, is tested directly with the codes.
@@ -251,7 +251,7 @@ TEST_CASE("errors: Vulkan results translate to DeviceLost OutOfMemory and Vulkan
 
     error = errorFrom([] { checkVk(VK_ERROR_INITIALIZATION_FAILED, "vkCreateDevice"); });
     REQUIRE(error);
-    CHECK(error->kind() == ErrorKind::Vulkan);
+    CHECK(error->kind() == ErrorKind::Driver);
     CHECK_THAT(error->what(), Contains("VK_ERROR_INITIALIZATION_FAILED"));
 }
 

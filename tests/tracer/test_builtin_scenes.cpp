@@ -13,7 +13,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/builtin_scenes.hpp>
 
 using namespace hush::tracer;

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/frame_io.hpp>
 
 #include "test_frame_io_support.hpp"

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/bmfr_dataset.hpp>
 #include <hush/tracer/frame_io.hpp>
 

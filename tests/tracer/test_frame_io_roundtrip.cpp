@@ -12,7 +12,7 @@
 
 #include <Imath/half.h>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/frame_io.hpp>
 
 #include "test_frame_io_support.hpp"

@@ -2,7 +2,7 @@
 // endings, and the named file:line error for each kind of malformed input.
 #include <catch2/catch.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/obj_loader.hpp>
 
 using namespace hush::tracer;

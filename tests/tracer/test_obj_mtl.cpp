@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/obj_loader.hpp>
 
 using namespace hush::tracer;

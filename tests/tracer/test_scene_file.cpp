@@ -5,7 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/scene_file.hpp>
 
 using namespace hush::tracer;

@@ -10,7 +10,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/scene_file.hpp>
 
 #include "../fuzz/fuzz_files.hpp"   // the in-memory files the fuzz harnesses use

@@ -2,7 +2,7 @@
 // the materials, the emitter and the camera come from the facts in its README.md.
 #include <filesystem>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/scene_file.hpp>
 
 namespace hush::tracer {

@@ -1,4 +1,4 @@
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/frame.hpp>
 
 namespace hush::tracer {

@@ -7,7 +7,7 @@
 #include <Imath/ImathBox.h>
 #include <OpenEXR/ImfHeader.h>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::tracer::detail {
 

@@ -9,7 +9,6 @@
 #include <memory>
 #include <vector>
 
-#include <unistd.h>
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -22,13 +21,13 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfVecAttribute.h>
 
+#include <hush/core/atomic_file.hpp>
 #include <hush/tracer/frame_io.hpp>
 
 #include "frame_io_detail.hpp"
 
 namespace hush::tracer {
 
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -176,21 +175,8 @@ void writeExr(const Frame& frame, const std::string& tempPath, const WriteOption
 
 void writeFrame(const Frame& frame, const std::string& path, const WriteOptions& options) {
     validateFrame(frame, path);
-    const std::string tempPath = path + ".tmp-" + std::to_string(::getpid());
-    try {
-        writeExr(frame, tempPath, options);
-        // rename() replaces `path` atomically: readers see the old file or the new one.
-        fs::rename(tempPath, path);
-    } catch (const std::exception& e) {
-        std::error_code ignored;
-        fs::remove(tempPath, ignored);
-        fs::path folder = fs::path(path).parent_path();
-        if (folder.empty()) folder = ".";
-        if (!fs::is_directory(folder, ignored))
-            throw Error(ErrorKind::NotFound,
-                        "cannot write frame '" + path + "': folder '" + folder.string() + "' does not exist");
-        throw Error(ErrorKind::InvalidArgument, "cannot write frame '" + path + "': " + e.what());
-    }
+    // Readers see the old file or the whole new one, never half of it.
+    core::writeAtomically(path, [&](const std::string& temporary) { writeExr(frame, temporary, options); });
 }
 
 } // namespace hush::tracer

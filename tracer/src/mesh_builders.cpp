@@ -9,7 +9,7 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::tracer::build {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <map>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/obj_loader.hpp>
 
 #include "text_parse.hpp"

@@ -11,7 +11,7 @@
 #include <set>
 #include <unordered_map>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/obj_loader.hpp>
 
 #include "text_parse.hpp"

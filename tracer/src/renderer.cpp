@@ -10,7 +10,7 @@
 
 #include <embree3/rtcore.h>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "camera_model.hpp"
 #include "path_integrator.hpp"

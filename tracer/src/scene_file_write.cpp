@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/tracer/scene_file.hpp>
 
 namespace hush::tracer {

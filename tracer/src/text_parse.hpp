@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::tracer::detail {
 

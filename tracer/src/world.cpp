@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "sampling.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::passes {
 

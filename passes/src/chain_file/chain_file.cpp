@@ -9,7 +9,7 @@
 #include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/eaw/chain.hpp>
 #include <hush/passes/svgf/chain.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 #include "chain_file/graph_chain.hpp"
 #include "chain_file/settings_json.hpp"

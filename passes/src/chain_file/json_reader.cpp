@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::passes::chain_file {
 

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include <hush/passes/metrics/partial_sums.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::passes {
 

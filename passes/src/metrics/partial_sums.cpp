@@ -3,7 +3,7 @@
 #include <cstring>
 #include <string>
 
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::passes {
 

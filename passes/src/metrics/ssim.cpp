@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include <hush/passes/metrics/partial_sums.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::passes {
 

@@ -1,7 +1,7 @@
 #include <hush/passes/svgf/chain.hpp>
 
 #include <hush/passes/common/surface.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 
 namespace hush::passes {
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <hush/rhi/format.hpp>
@@ -42,6 +43,8 @@ struct AdapterInfo {
     uint32_t deviceId = 0;
     uint32_t apiVersion = 0;          // VK_MAKE_API_VERSION encoded
     std::string apiVersionString() const;
+    // name, type, driver, driver_info, api_version: what a results file records.
+    std::vector<std::pair<std::string, std::string>> reportFields() const;
     AdapterLimits limits;
 };
 

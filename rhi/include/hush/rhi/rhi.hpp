@@ -4,7 +4,7 @@
 #include <hush/rhi/buffer.hpp>
 #include <hush/rhi/command.hpp>
 #include <hush/rhi/device.hpp>
-#include <hush/rhi/error.hpp>
+#include <hush/core/error.hpp>
 #include <hush/rhi/format.hpp>
 #include <hush/rhi/instance.hpp>
 #include <hush/rhi/pipeline.hpp>

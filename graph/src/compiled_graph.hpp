@@ -15,7 +15,7 @@ namespace hush::graph {
 struct BindGroupDecl {
     rhi::ComputePipeline pipeline;
     uint32_t set = 0;
-    std::vector<GraphBinding> bindings;
+    std::vector<FixedBinding> fixed;
 };
 
 struct RenderGraph::PassRuntime {
@@ -31,24 +31,16 @@ struct RecordedBarriers {
     bool empty() const { return textures.empty() && buffers.empty() && memory.empty(); }
 };
 
-struct CompiledGraph {
+struct CompiledGraph : RealizedResources {
     CullResult cull;
     std::vector<uint32_t> order;
     std::vector<Lifetime> lifetimes;
     BarrierPlan barriers;
     rhi::Extent2D outputSize;
-    std::vector<rhi::Extent2D> extents;           // by resource (textures)
-    std::vector<bool> aliased;                    // by resource
-    std::vector<uint64_t> memoryOffset;           // by resource: offset in the transient block, or kNone
-    std::vector<uint32_t> aliasSlot;              // by resource
-    std::vector<bool> historyPair;                // by resource: part of a ping-pong pair
-    std::vector<rhi::TextureUsage> textureUsage;  // by resource
-    rhi::MemoryBlock transientBlock;
-    MemoryReport memory;
+    // What an optional port left unconnected binds (1x1, never read): one per binding
+    // kind and format, made only when needed.
+    std::vector<rhi::Texture> placeholders;
 
-    // Physical resources by resource index and frame parity.
-    std::vector<std::array<rhi::Texture, 2>> textures;
-    std::vector<rhi::Buffer> buffers;
     // Bind groups by pass index, declaration index and parity.
     std::vector<std::vector<std::array<rhi::BindGroup, 2>>> bindGroups;
     std::vector<std::vector<uint32_t>> bindGroupSets;
@@ -56,5 +48,11 @@ struct CompiledGraph {
     std::vector<std::array<RecordedBarriers, 2>> passBarriers;
     std::array<RecordedBarriers, 2> frameEndBarriers;
 };
+
+// Makes every live pass's bind groups for both parities: each shader binding is bound
+// to the pass's port of the same name (or a fixed binding), checked against the
+// pipeline's reflected layout; errors name the pass, the binding and the ports.
+void createBindGroups(const rhi::Device& device, const GraphModel& model,
+                      const std::vector<std::vector<BindGroupDecl>>& declared, CompiledGraph& compiled);
 
 } // namespace hush::graph

@@ -47,12 +47,7 @@ const char* toString(Access access) {
 uint32_t GraphModel::historySource(uint32_t historyResource) const {
     if (historyResource >= resources.size()) return kNone;
     const auto& h = resources[historyResource];
-    if (h.origin != ResourceOrigin::History) return kNone;
-    for (uint32_t i = 0; i < resources.size(); ++i) {
-        const auto& r = resources[i];
-        if (r.origin == ResourceOrigin::Transient && r.kind == ResourceKind::Texture && r.name == h.name) return i;
-    }
-    return kNone;
+    return h.origin == ResourceOrigin::History ? h.historySource : kNone;
 }
 
 } // namespace hush::graph

@@ -102,9 +102,9 @@ TextureHandle PassBuilder::copyTo(const std::string& port, TextureHandle h) {
 }
 
 BindGroupHandle PassBuilder::bindGroup(const rhi::ComputePipeline& pipeline, uint32_t set,
-                                       std::vector<GraphBinding> bindings) {
+                                       std::vector<FixedBinding> fixed) {
     auto& decls = graph_.passes_[pass_].bindGroups;
-    decls.push_back({pipeline, set, std::move(bindings)});
+    decls.push_back({pipeline, set, std::move(fixed)});
     graph_.markDirty();
     return {pass_, uint32_t(decls.size() - 1)};
 }

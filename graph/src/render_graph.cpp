@@ -78,6 +78,58 @@ TextureHandle RenderGraph::history(const std::string& name, const TextureInfo& i
     return {addResource(std::move(decl)), 0};
 }
 
+TextureHandle RenderGraph::history(TextureHandle source) {
+    checkTransient(source, "history");
+    for (uint32_t r = 0; r < model_.resources.size(); ++r)
+        if (model_.resources[r].origin == ResourceOrigin::History && model_.resources[r].historySource == source.index)
+            return {r, 0};
+    const auto& src = model_.resources[source.index];
+    const TextureHandle h = history(src.name, src.texture);
+    model_.resources[h.index].historySource = source.index;
+    return h;
+}
+
+void RenderGraph::bindHistory(TextureHandle history, TextureHandle source) {
+    checkTransient(source, "bindHistory");
+    if (history.index >= model_.resources.size() || model_.resources[history.index].origin != ResourceOrigin::History)
+        throw Error(ErrorKind::InvalidArgument, "bindHistory: the first handle is not a history of graph '" +
+                                                    desc_.label + "'");
+    auto& h = model_.resources[history.index];
+    for (const auto& other : model_.resources)
+        if (&other != &h && other.origin == ResourceOrigin::History && other.historySource == source.index)
+            throw Error(ErrorKind::InvalidArgument, "bindHistory: '" + model_.resources[source.index].name +
+                                                        "' already has a history ('" + other.name +
+                                                        "'); read that one");
+    if (h.historySource != kNone && h.historySource != source.index)
+        throw Error(ErrorKind::InvalidArgument, "bindHistory: history '" + h.name + "' is already bound to '" +
+                                                    model_.resources[h.historySource].name + "'");
+    h.historySource = source.index;
+    markDirty();
+}
+
+void RenderGraph::checkTransient(TextureHandle texture, const char* call) const {
+    if (texture.index >= model_.resources.size() ||
+        model_.resources[texture.index].origin != ResourceOrigin::Transient ||
+        model_.resources[texture.index].kind != ResourceKind::Texture)
+        throw Error(ErrorKind::InvalidArgument, std::string(call) + ": the source must be a texture a pass of graph '" +
+                                                    desc_.label + "' creates");
+}
+
+TextureHandle RenderGraph::findTexture(std::string_view name) const {
+    for (uint32_t r = 0; r < model_.resources.size(); ++r) {
+        const auto& res = model_.resources[r];
+        if (res.name == name && res.kind == ResourceKind::Texture && res.origin != ResourceOrigin::History)
+            return {r, res.versionCount - 1};
+    }
+    return {};
+}
+
+TextureHandle RenderGraph::historySource(TextureHandle history) const {
+    const uint32_t s = model_.historySource(history.index);
+    if (s == kNone) return {};
+    return {s, model_.resources[s].versionCount - 1};
+}
+
 void RenderGraph::markOutput(TextureHandle texture) {
     if (texture.index >= model_.resources.size())
         throw Error(ErrorKind::InvalidArgument, "markOutput: the texture handle does not belong to this graph");

@@ -148,21 +148,23 @@ void validate(const GraphModel& m) {
             if (!read) continue;
             const uint32_t source = m.historySource(r);
             if (source == kNone) {
-                errors.push_back("history '" + res.name + "' is read, but no pass creates a texture named '" +
-                                 res.name + "' for it to come from");
+                errors.push_back("history '" + res.name + "' is read, but bound to no texture to come from "
+                                 "(RenderGraph::bindHistory, or history(source))");
+                continue;
+            }
+            if (source >= m.resources.size() || m.resources[source].origin != ResourceOrigin::Transient ||
+                m.resources[source].kind != ResourceKind::Texture) {
+                errors.push_back("history '" + res.name + "' is bound to a resource that is not a texture some pass "
+                                 "creates");
                 continue;
             }
             const auto& src = m.resources[source];
             if (!(src.texture == res.texture))
                 errors.push_back("history '" + res.name + "' is declared as " +
                                  std::string(rhi::toString(res.texture.format)) + " " +
-                                 sizeText(res.texture.size.resolve(m.outputSize)) + ", but the texture it comes from is " +
-                                 std::string(rhi::toString(src.texture.format)) + " " +
+                                 sizeText(res.texture.size.resolve(m.outputSize)) + ", but the texture it comes from ('" +
+                                 src.name + "') is " + std::string(rhi::toString(src.texture.format)) + " " +
                                  sizeText(src.texture.size.resolve(m.outputSize)));
-            for (uint32_t other = source + 1; other < m.resources.size(); ++other)
-                if (m.resources[other].origin == ResourceOrigin::Transient && m.resources[other].name == res.name)
-                    errors.push_back("history '" + res.name + "' is ambiguous: two passes create a texture named '" +
-                                     res.name + "'");
         }
     }
 

@@ -3,6 +3,8 @@
 // order) and keeping every object used alive until the submission completes.
 #include <algorithm>
 
+#include <hush/rhi/push_constants.hpp>
+
 #include "objects.hpp"
 #include "vk_check.hpp"
 #include "vk_convert.hpp"
@@ -178,6 +180,17 @@ void ComputePassEncoder::setPushConstants(const void* data, uint32_t bytes, uint
                                              std::to_string(p.pushConstantBytes) + " bytes (4-byte aligned)");
     enc->device->vk.vkCmdPushConstants(enc->commandBuffer, p.layout, VK_SHADER_STAGE_COMPUTE_BIT, offset, bytes, data);
     enc->pushConstantBytesSet = std::max(enc->pushConstantBytesSet, offset + bytes);
+}
+
+void ComputePassEncoder::setPushConstants(const PushConstants& values) {
+    auto* enc = encoder_;
+    if (!enc || !enc->inPass) fail(ErrorKind::InvalidArgument, "setPushConstants on a compute pass that has ended");
+    if (!enc->pipeline || enc->pipeline.get() != values.pipeline().shared().get())
+        fail(ErrorKind::InvalidArgument, "setPushConstants in compute pass '" + enc->passLabel + "': the values are for pipeline '" +
+                                             (values.pipeline() ? values.pipeline().label() : std::string("(none)")) +
+                                             "', which is not the bound one");
+    values.requireComplete();
+    if (values.size() > 0) setPushConstants(values.data(), values.size());
 }
 
 void ComputePassEncoder::dispatchWorkgroups(uint32_t x, uint32_t y, uint32_t z) {

@@ -134,6 +134,9 @@ uint32_t ComputePipeline::bindGroupLayoutCount() const {
     return uint32_t(checked(impl_, "ComputePipeline")->setLayouts.size());
 }
 uint32_t ComputePipeline::pushConstantBytes() const { return checked(impl_, "ComputePipeline")->pushConstantBytes; }
+const std::vector<PushConstantMember>& ComputePipeline::pushConstantMembers() const {
+    return checked(impl_, "ComputePipeline")->module->reflection.pushConstants;
+}
 std::array<uint32_t, 3> ComputePipeline::workgroupSize() const {
     return checked(impl_, "ComputePipeline")->workgroupSize;
 }

@@ -6,6 +6,7 @@
 #include <hush/rhi/format.hpp>
 #include <hush/rhi/instance.hpp>
 #include <hush/rhi/resource_state.hpp>
+#include <hush/rhi/shader.hpp>
 
 
 namespace hush::rhi {
@@ -103,6 +104,15 @@ std::string_view toString(AdapterType type) {
     case AdapterType::Other: return "other";
     }
     return "other";
+}
+
+std::string_view toString(ScalarType type) {
+    switch (type) {
+    case ScalarType::Float32: return "float";
+    case ScalarType::Int32: return "int";
+    case ScalarType::Uint32: return "uint";
+    }
+    return "unknown";
 }
 
 std::string_view toString(BindingKind kind) {

@@ -61,6 +61,7 @@ public:
         for (const auto& r : resources.push_constant_buffers) {
             const auto& type = compiler_.get_type(r.base_type_id);
             out.pushConstantBytes = std::max(out.pushConstantBytes, uint32_t(compiler_.get_declared_struct_size(type)));
+            addPushConstantMembers(r.base_type_id, out.pushConstants);
         }
 
         uint32_t setCount = sets_.empty() ? 0 : sets_.rbegin()->first + 1;
@@ -107,6 +108,35 @@ private:
             if (other.binding == entry.binding)
                 throw Error(ErrorKind::InvalidArgument, "two resources share binding: " + where + " and '" + other.name + "'");
         list.push_back(entry);
+    }
+
+    // Scalars and vectors of float, int and uint: what hush's shaders pass per dispatch.
+    void addPushConstantMembers(spirv_cross::TypeID block, std::vector<PushConstantMember>& out) {
+        const auto& type = compiler_.get_type(block);
+        for (uint32_t i = 0; i < type.member_types.size(); ++i) {
+            const auto& member = compiler_.get_type(type.member_types[i]);
+            PushConstantMember m;
+            m.name = compiler_.get_member_name(block, i);
+            m.offset = compiler_.type_struct_member_offset(type, i);
+            m.components = member.vecsize;
+            const std::string where = "push constant '" + m.name + "' of shader '" + label_ + "'";
+            if (member.columns != 1 || member.array.size() > 1)
+                throw Error(ErrorKind::Unsupported, where + " is a matrix or a nested array; hush passes scalars, "
+                                                            "vectors and arrays of them");
+            if (!member.array.empty()) {
+                m.arraySize = member.array[0];
+                // Only arrays without gaps between elements (vec4s in std430).
+                if (compiler_.type_struct_member_array_stride(type, i) != 4 * m.components)
+                    throw Error(ErrorKind::Unsupported, where + " is an array with padding; use an array of 4-vectors");
+            }
+            switch (member.basetype) {
+            case spirv_cross::SPIRType::Float: m.type = ScalarType::Float32; break;
+            case spirv_cross::SPIRType::Int: m.type = ScalarType::Int32; break;
+            case spirv_cross::SPIRType::UInt: m.type = ScalarType::Uint32; break;
+            default: throw Error(ErrorKind::Unsupported, where + " is not a float, int or uint (vector)");
+            }
+            out.push_back(std::move(m));
+        }
     }
 
     void rejectUnsupported(const spirv_cross::SmallVector<spirv_cross::Resource>& list, const char* what) {

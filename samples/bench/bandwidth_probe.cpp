@@ -7,7 +7,7 @@
 #include <span>
 
 #include <hush/rhi/rhi.hpp>
-#include <hush/shaders/shaders.hpp>
+#include <hush_bench_shaders.hpp>
 
 namespace hush::bench {
 namespace {
@@ -55,7 +55,7 @@ struct DeviceProbe {
 };
 
 ComputePipeline makePipeline(const Device& device, const char* shader) {
-    ShaderModule module = device.createShaderModule({.label = shader, .code = hush::shaders::find(shader)});
+    ShaderModule module = device.createShaderModule({.label = shader, .code = hush::bench_shaders::find(shader)});
     return device.createComputePipeline({.label = shader, .module = module});
 }
 

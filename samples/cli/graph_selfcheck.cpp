@@ -6,7 +6,7 @@
 
 #include <hush/graph/render_graph.hpp>
 #include <hush/rhi/rhi.hpp>
-#include <hush/shaders/shaders.hpp>
+#include <hush_cli_shaders.hpp>
 
 namespace hush::cli {
 
@@ -31,7 +31,7 @@ bool GraphSelfCheckResult::passed() const {
 GraphSelfCheckResult runGraphSelfCheck(const Device& device) {
     auto pipeline = [&](const char* name) {
         return device.createComputePipeline(
-            {.label = name, .module = device.createShaderModule({.label = name, .code = hush::shaders::find(name)})});
+            {.label = name, .module = device.createShaderModule({.label = name, .code = hush::cli_shaders::find(name)})});
     };
     const auto affine = pipeline("selfcheck/affine");
     const auto accumulate = pipeline("selfcheck/accumulate");
@@ -56,36 +56,43 @@ GraphSelfCheckResult runGraphSelfCheck(const Device& device) {
                                                 .finalState = ResourceState::StorageRead});
     auto dst = g.importTexture("output", output, {.initialState = ResourceState::Undefined,
                                                   .finalState = ResourceState::CopySrc});
-    auto previous = g.history("selfcheck.accumulated", rgba32f);
     struct Affine {
         float scale, bias;
     };
     // `to`: an existing texture to write, or none to create one named after the pass.
-    auto affinePass = [&](const std::string& name, TextureHandle from, Affine params, TextureHandle to = {}) {
-        TextureHandle written;
-        g.addPass(name, [&](PassBuilder& b) {
-            auto read = b.read("src", from);
-            written = b.write("dst", to ? to : b.create(name + ".out", rgba32f));
-            auto group = b.bindGroup(affine, 0, {{.name = "src", .texture = read}, {.name = "dst", .texture = written}});
-            return [=](PassContext& ctx) { ctx.dispatch(affine, group, ctx.outputSize(), params); };
-        });
-        return written;
+    auto affinePass = [&](const std::string& name, TextureHandle from, Affine a, TextureHandle to = {}) {
+        PushConstants params(affine);
+        params.set("scale", a.scale).set("bias", a.bias);
+        struct Out {
+            TextureHandle written;
+        };
+        return g.addPass<Out>(name, [&](PassBuilder& b, Out& o) {
+                    b.read("src", from);
+                    o.written = b.write("dst", to ? to : b.create(name + ".out", rgba32f));
+                    const auto group = b.bindGroup(affine);
+                    return [=](PassContext& ctx) { ctx.dispatch(affine, group, ctx.outputSize(), params); };
+                })
+            .written;
     };
     const auto t1 = affinePass("selfcheck.double", src, {2.0f, 1.0f});   // 2x + 1
     const auto t2 = affinePass("selfcheck.halve", t1, {0.5f, 0.0f});     // x + 0.5
     affinePass(kUnusedPass, t1, {3.0f, 0.0f});                           // nobody reads it: culled
-    TextureHandle acc;
-    g.addPass("selfcheck.accumulate", [&](PassBuilder& b) {
-        auto current = b.read("current", t2);
-        auto history = b.read("history", previous);
-        acc = b.write("accumulated", b.create("selfcheck.accumulated", rgba32f));
-        auto group = b.bindGroup(accumulate, 0, {{.name = "current", .texture = current},
-                                                 {.name = "history", .texture = history},
-                                                 {.name = "dst", .texture = acc}});
-        return [=](PassContext& ctx) {
-            ctx.dispatch(accumulate, group, ctx.outputSize(), uint32_t(ctx.historyValid()));
+    struct Accumulated {
+        TextureHandle sum;
+    };
+    const TextureHandle acc = g.addPass<Accumulated>("selfcheck.accumulate", [&](PassBuilder& b, Accumulated& o) {
+        b.read("current", t2);
+        const auto sum = b.create("selfcheck.accumulated", rgba32f);
+        b.read("history", g.history(sum));   // the sum of the frames so far
+        o.sum = b.write("dst", sum);
+        const auto group = b.bindGroup(accumulate);
+        PushConstants params(accumulate);
+        const auto historyValid = params.slot("historyValid", ScalarType::Uint32);
+        return [=](PassContext& ctx) mutable {
+            params.set(historyValid, uint32_t(ctx.historyValid()));
+            ctx.dispatch(accumulate, group, ctx.outputSize(), params);
         };
-    });
+    }).sum;
     affinePass("selfcheck.present", acc, {1.0f, 0.0f}, dst);
 
     GraphSelfCheckResult result;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <hush/rhi/rhi.hpp>
-#include <hush/shaders/shaders.hpp>
+#include <hush_cli_shaders.hpp>
 
 namespace hush::cli {
 namespace {
@@ -63,7 +63,7 @@ SelfCheckResult runSelfCheck(const Device& device) {
     }
 
     ShaderModule module = device.createShaderModule(
-        {.label = "rhi/selfcheck", .code = hush::shaders::find("rhi/selfcheck")});
+        {.label = "rhi/selfcheck", .code = hush::cli_shaders::find("rhi/selfcheck")});
     ComputePipeline pipeline = device.createComputePipeline({.label = "rhi/selfcheck", .module = module});
 
     Buffer xBuffer = device.createBuffer(

@@ -20,7 +20,6 @@ layout(push_constant) uniform Params {
     float minWeight;     // in (0, 1], checked on the CPU
     float countCap;      // ceil(1 / minWeight) >= 1
     uint historyValid;
-    uint pad;
 } params;
 
 void main() {

@@ -26,8 +26,8 @@ layout(set = 0, binding = 1) uniform texture2D normal;
 layout(set = 0, binding = 2) uniform texture2D position;
 layout(set = 0, binding = 3) uniform texture2D albedo;
 layout(set = 0, binding = 4) uniform texture2D roughness;
-layout(set = 0, binding = 5) uniform texture2D meshId;
-layout(set = 0, binding = 7, std430) buffer Blocks { float matrix[]; };
+layout(set = 0, binding = 5) uniform texture2D meshid;
+layout(set = 0, binding = 7, std430) buffer BlocksBlock { float values[]; } blocks;
 
 layout(push_constant) uniform Params {
     uint blockSize;
@@ -41,7 +41,6 @@ layout(push_constant) uniform Params {
     float diagonalGuard;
     float zeroColumn;
     float dependentColumn;
-    uint pad1;
     uvec4 codes[2];   // feature codes, one byte each, feature m in byte m
 } params;
 
@@ -82,7 +81,7 @@ BmfrGuideTexel fetchGuide(ivec2 p, uvec2 local) {
     g.position = texelFetch(position, p, 0).xyz;
     g.albedo = texelFetch(albedo, p, 0).rgb;
     g.roughness = texelFetch(roughness, p, 0).x;
-    g.meshId = texelFetch(meshId, p, 0).x;
+    g.meshId = texelFetch(meshid, p, 0).x;
     g.inBlock = vec2(local) / float(max(params.blockSize - 1u, 1u));
     return g;
 }
@@ -117,14 +116,14 @@ void main() {
         }
         for (uint m = 0u; m < M; ++m) {
             float f = valid ? bmfrRawFeature(featureCode(m), g) : 0.0;
-            matrix[base + m * BB + r] = f;
+            blocks.values[base + m * BB + r] = f;
             if (valid) {
                 lo[m] = min(lo[m], f);
                 hi[m] = max(hi[m], f);
             }
         }
         for (uint c = 0u; c < 3u; ++c) {
-            matrix[base + (M + c) * BB + r] = z[c];
+            blocks.values[base + (M + c) * BB + r] = z[c];
             hi[M + c] = max(hi[M + c], abs(z[c]));
         }
     }
@@ -162,12 +161,12 @@ void main() {
             // A flat column stays exactly 0 (no noise): noise there could only fit z's
             // own noise and regularises nothing; the QR skips the zero column.
             bool live = code == kBmfrOne || featureHalfRange[m] > 0.0;
-            matrix[i] = bmfrScaled(code, matrix[i], featureLo[m], featureHalfRange[m]) +
+            blocks.values[i] = bmfrScaled(code, blocks.values[i], featureLo[m], featureHalfRange[m]) +
                         (live ? bmfrNoise(uvec2(p), params.frame, m, params.epsilon) : 0.0);
         }
         for (uint c = 0u; c < 3u; ++c) {
             uint i = base + (M + c) * BB + r;
-            matrix[i] = matrix[i] / colourScale[c];
+            blocks.values[i] = blocks.values[i] / colourScale[c];
         }
     }
 
@@ -176,7 +175,7 @@ void main() {
         float acc[kMaxColumns];
         for (uint m = 0u; m < M; ++m) acc[m] = 0.0;
         for (uint r = tid; r < BB; r += kThreads)
-            for (uint m = 0u; m < M; ++m) acc[m] += matrix[base + m * BB + r] * matrix[base + m * BB + r];
+            for (uint m = 0u; m < M; ++m) acc[m] += blocks.values[base + m * BB + r] * blocks.values[base + m * BB + r];
         barrier();
         for (uint m = 0u; m < M; ++m) partial[m * kThreads + tid] = acc[m];
         reduceColumns(0u, 0u, M);
@@ -200,9 +199,9 @@ void main() {
         barrier();   // everyone is done reading rowK and partial of step k - 1
         for (uint r = tid; r < BB; r += kThreads) {
             if (r < rho) continue;
-            float xk = matrix[base + k * BB + r];
+            float xk = blocks.values[base + k * BB + r];
             for (uint j = k; j < C; ++j) {
-                float a = matrix[base + j * BB + r];
+                float a = blocks.values[base + j * BB + r];
                 acc[j] += xk * a;
                 if (r == rho) rowK[j] = a;
             }
@@ -227,8 +226,8 @@ void main() {
         }
         for (uint r = tid; r < BB; r += kThreads) {
             if (r <= rho) continue;
-            float v = matrix[base + k * BB + r];
-            for (uint j = k + 1u; j < C; ++j) matrix[base + j * BB + r] -= v * factor[j];
+            float v = blocks.values[base + k * BB + r];
+            for (uint j = k + 1u; j < C; ++j) blocks.values[base + j * BB + r] -= v * factor[j];
         }
         ++rho;
     }

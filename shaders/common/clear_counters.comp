@@ -3,7 +3,7 @@
 // buffer fill, so that the graph sees one kind of access (storage write) on it.
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = 0, std430) writeonly buffer Counters { uint counts[]; };
+layout(set = 0, binding = 0, std430) writeonly buffer CountsBlock { uint values[]; } counts;
 
 layout(push_constant) uniform Params {
     uint count;
@@ -12,6 +12,6 @@ layout(push_constant) uniform Params {
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i < params.count) {
-        counts[i] = 0u;
+        counts.values[i] = 0u;
     }
 }

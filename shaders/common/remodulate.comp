@@ -8,15 +8,15 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform texture2D illuminationA;
-layout(set = 0, binding = 1) uniform texture2D illuminationB;
+layout(set = 0, binding = 0) uniform texture2D a;
+layout(set = 0, binding = 1) uniform texture2D b;
 layout(set = 0, binding = 2) uniform texture2D albedo;
 layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D radiance;
 layout(set = 0, binding = 4) uniform texture2D emission;   // read when hasEmission
 
 layout(push_constant) uniform Params {
     float eps;
-    uint termCount;   // 1: illuminationB is not read
+    uint termCount;   // 1: b is not read
     uint hasEmission;
 } params;
 
@@ -25,9 +25,9 @@ void main() {
     if (!hushInside(p, imageSize(radiance))) {
         return;
     }
-    vec3 sum = texelFetch(illuminationA, p, 0).rgb;
+    vec3 sum = texelFetch(a, p, 0).rgb;
     if (params.termCount > 1u) {
-        sum += texelFetch(illuminationB, p, 0).rgb;
+        sum += texelFetch(b, p, 0).rgb;
     }
     vec3 factor = demodulationFactor(texelFetch(albedo, p, 0).rgb, params.eps);
     vec3 result = sum * factor;

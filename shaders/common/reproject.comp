@@ -11,11 +11,11 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform texture2D motion;
-layout(set = 0, binding = 1) uniform texture2D normalDepth;
-layout(set = 0, binding = 2) uniform texture2D gradientMesh;
-layout(set = 0, binding = 3) uniform texture2D previousNormalDepth;
-layout(set = 0, binding = 4) uniform texture2D previousGradientMesh;
-layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D decision;
+layout(set = 0, binding = 1) uniform texture2D normal_depth;
+layout(set = 0, binding = 2) uniform texture2D gradient_mesh;
+layout(set = 0, binding = 3) uniform texture2D previous_normal_depth;
+layout(set = 0, binding = 4) uniform texture2D previous_gradient_mesh;
+layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D reprojection;
 
 layout(push_constant) uniform Params {
     float normalCosine;
@@ -40,8 +40,8 @@ bool consistent(Centre c, ivec2 tap, vec2 offset, ivec2 size) {
     if (!hushInside(tap, size)) {
         return false;
     }
-    vec4 nd = texelFetch(previousNormalDepth, tap, 0);
-    float meshId = texelFetch(previousGradientMesh, tap, 0).z;
+    vec4 nd = texelFetch(previous_normal_depth, tap, 0);
+    float meshId = texelFetch(previous_gradient_mesh, tap, 0).z;
     if (meshId != c.meshId) {
         return false;
     }
@@ -55,7 +55,7 @@ bool consistent(Centre c, ivec2 tap, vec2 offset, ivec2 size) {
 
 void main() {
     ivec2 p = hushPixel();
-    ivec2 size = imageSize(decision);
+    ivec2 size = imageSize(reprojection);
     if (!hushInside(p, size)) {
         return;
     }
@@ -65,11 +65,11 @@ void main() {
     bool near = all(greaterThanEqual(pos, lo)) && all(lessThanEqual(pos, hi));
     vec2 shown = vec2(pos.x >= lo.x ? min(pos.x, hi.x) : lo.x, pos.y >= lo.y ? min(pos.y, hi.y) : lo.y);
 
-    vec4 nd = texelFetch(normalDepth, p, 0);
-    vec4 gm = texelFetch(gradientMesh, p, 0);
+    vec4 nd = texelFetch(normal_depth, p, 0);
+    vec4 gm = texelFetch(gradient_mesh, p, 0);
     Centre c = Centre(nd.xyz, nd.w, gm.xy, gm.z);
     if (params.historyValid == 0u || !near || c.meshId < 0.0) {
-        imageStore(decision, p, vec4(shown, 0.0, float(kReprojectDisoccluded)));
+        imageStore(reprojection, p, vec4(shown, 0.0, float(kReprojectDisoccluded)));
         return;
     }
 
@@ -87,7 +87,7 @@ void main() {
         }
     }
     if (mask != 0u) {
-        imageStore(decision, p, vec4(pos, float(mask), float(kReprojectBilinear)));
+        imageStore(reprojection, p, vec4(pos, float(mask), float(kReprojectBilinear)));
         return;
     }
 
@@ -103,9 +103,9 @@ void main() {
             }
         }
         if (mask != 0u) {
-            imageStore(decision, p, vec4(topLeft, float(mask), float(kReprojectFallback3x3)));
+            imageStore(reprojection, p, vec4(topLeft, float(mask), float(kReprojectFallback3x3)));
             return;
         }
     }
-    imageStore(decision, p, vec4(shown, 0.0, float(kReprojectDisoccluded)));
+    imageStore(reprojection, p, vec4(shown, 0.0, float(kReprojectDisoccluded)));
 }

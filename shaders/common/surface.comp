@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
 // The primary surface in the two textures every edge-stopping and reprojection test
-// reads: normalDepth = (world normal xyz, linear depth) and gradientMesh = (dz/dx,
+// reads: normal_depth = (world normal xyz, linear depth) and gradient_mesh = (dz/dx,
 // dz/dy, mesh id, 0). The gradient takes, per axis, the one-sided difference of
 // smaller magnitude, so that a depth edge next to a pixel does not inflate its slope;
 // a neighbour on another mesh (or on none) is not the same surface and is not used,
@@ -14,9 +14,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform texture2D normal;
 layout(set = 0, binding = 1) uniform texture2D depth;
-layout(set = 0, binding = 2) uniform texture2D meshId;
-layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D normalDepth;
-layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D gradientMesh;
+layout(set = 0, binding = 2) uniform texture2D meshid;
+layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D normal_depth;
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D gradient_mesh;
 
 float depthAt(ivec2 p) {
     return texelFetch(depth, p, 0).x;
@@ -26,10 +26,10 @@ float depthAt(ivec2 p) {
 // where there is none.
 float slope(ivec2 p, ivec2 axis, ivec2 size) {
     float z = depthAt(p);
-    float mesh = texelFetch(meshId, p, 0).x;
+    float mesh = texelFetch(meshid, p, 0).x;
     ivec2 lo = p - axis, hi = p + axis;
-    bool hasLo = all(greaterThanEqual(lo, ivec2(0))) && texelFetch(meshId, lo, 0).x == mesh;
-    bool hasHi = all(lessThan(hi, size)) && texelFetch(meshId, hi, 0).x == mesh;
+    bool hasLo = all(greaterThanEqual(lo, ivec2(0))) && texelFetch(meshid, lo, 0).x == mesh;
+    bool hasHi = all(lessThan(hi, size)) && texelFetch(meshid, hi, 0).x == mesh;
     float dLo = hasLo ? z - depthAt(lo) : 0.0;
     float dHi = hasHi ? depthAt(hi) - z : 0.0;
     if (hasLo && hasHi) {
@@ -40,14 +40,14 @@ float slope(ivec2 p, ivec2 axis, ivec2 size) {
 
 void main() {
     ivec2 p = hushPixel();
-    ivec2 size = imageSize(normalDepth);
+    ivec2 size = imageSize(normal_depth);
     if (!hushInside(p, size)) {
         return;
     }
     vec3 n = texelFetch(normal, p, 0).xyz;
     float len = length(n);
     n = len > 1e-6 ? n / len : vec3(0.0);
-    imageStore(normalDepth, p, vec4(n, depthAt(p)));
-    imageStore(gradientMesh, p, vec4(slope(p, ivec2(1, 0), size), slope(p, ivec2(0, 1), size),
-                                     texelFetch(meshId, p, 0).x, 0.0));
+    imageStore(normal_depth, p, vec4(n, depthAt(p)));
+    imageStore(gradient_mesh, p, vec4(slope(p, ivec2(1, 0), size), slope(p, ivec2(0, 1), size),
+                                     texelFetch(meshid, p, 0).x, 0.0));
 }

@@ -10,7 +10,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform texture2D current;
+layout(set = 0, binding = 0) uniform texture2D color;
 layout(set = 0, binding = 1) uniform texture2D motion;
 layout(set = 0, binding = 2) uniform texture2D history;
 layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D resolved;
@@ -40,7 +40,7 @@ const float kMinNormal = 1.1754944e-38;
 const float kClipMargin = 1.0 / 65536.0;
 
 vec3 currentAt(ivec2 q, ivec2 size) {
-    return texelFetch(current, clamp(q, ivec2(0), size - 1), 0).rgb;
+    return texelFetch(color, clamp(q, ivec2(0), size - 1), 0).rgb;
 }
 
 // True when the decision's 2x2 footprint kept every tap of positive bilinear weight
@@ -143,7 +143,7 @@ void main() {
     if (!hushInside(p, size)) {
         return;
     }
-    vec3 cur = texelFetch(current, p, 0).rgb;
+    vec3 cur = texelFetch(color, p, 0).rgb;
     vec3 hist;
     bool haveHistory = params.historyValid != 0u && historyAt(p, size, hist);
     vec3 result = cur;

@@ -12,7 +12,7 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(set = 0, binding = 2, std430) writeonly buffer Partials { vec4 partials[]; };
+layout(set = 0, binding = 2, std430) writeonly buffer PartialsBlock { vec4 values[]; } partials;
 
 const uint kReduceInvocations = 256u;
 shared vec4 hushReduceScratch[kReduceInvocations];
@@ -38,7 +38,7 @@ void hushStorePartial(vec4 value) {
         barrier();
     }
     if (i == 0u) {
-        partials[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x] = hushReduceScratch[0];
+        partials.values[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x] = hushReduceScratch[0];
     }
 }
 

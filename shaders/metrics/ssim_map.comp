@@ -24,7 +24,7 @@ layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(set = 0, binding = 0) uniform texture2D image;
 layout(set = 0, binding = 1) uniform texture2D reference;
-layout(set = 0, binding = 2, rgba32f) uniform writeonly image2D ssimMap;
+layout(set = 0, binding = 2, rgba32f) uniform writeonly image2D map;
 
 layout(push_constant) uniform Params {
     float c1;      // (K1 L)^2
@@ -72,7 +72,7 @@ void main() {
     }
     const ivec2 xRange = centreRange(size.x), yRange = centreRange(size.y);
     if (p.x < xRange.x || p.x > xRange.y || p.y < yRange.x || p.y > yRange.y) {
-        imageStore(ssimMap, p, vec4(0.0));
+        imageStore(map, p, vec4(0.0));
         return;
     }
 
@@ -108,7 +108,7 @@ void main() {
         }
     }
     if (!finite) {
-        imageStore(ssimMap, p, vec4(0.0, 0.0, 1.0, 0.0));
+        imageStore(map, p, vec4(0.0, 0.0, 1.0, 0.0));
         return;
     }
     vec3 varA = vec3(0.0), varB = vec3(0.0), cov = vec3(0.0);
@@ -128,5 +128,5 @@ void main() {
     const vec3 luminance = (2.0 * muA * muB + params.c1) / (muA * muA + muB * muB + params.c1);
     const vec3 contrastStructure = (2.0 * cov + params.c2) / (varA + varB + params.c2);
     const vec3 ssim = luminance * contrastStructure;
-    imageStore(ssimMap, p, vec4((ssim.r + ssim.g + ssim.b) / 3.0, 1.0, 0.0, 0.0));
+    imageStore(map, p, vec4((ssim.r + ssim.g + ssim.b) / 3.0, 1.0, 0.0, 0.0));
 }

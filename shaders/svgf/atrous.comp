@@ -8,10 +8,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform texture2D illumVariance;        // rgb illumination, a variance
-layout(set = 0, binding = 1) uniform texture2D prefilteredVariance;  // g3x3(variance), r
-layout(set = 0, binding = 2) uniform texture2D normalDepth;          // normal xyz, linear depth
-layout(set = 0, binding = 3) uniform texture2D gradientMesh;         // dz/dx, dz/dy, mesh id
+layout(set = 0, binding = 0) uniform texture2D illum_variance;        // rgb illumination, a variance
+layout(set = 0, binding = 1) uniform texture2D prefiltered_variance;  // g3x3(variance), r
+layout(set = 0, binding = 2) uniform texture2D normal_depth;          // normal xyz, linear depth
+layout(set = 0, binding = 3) uniform texture2D gradient_mesh;         // dz/dx, dz/dy, mesh id
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D filtered;
 
 layout(push_constant) uniform Params {
@@ -39,9 +39,9 @@ void main() {
     if (!hushInside(p, size)) {
         return;
     }
-    vec4 centre = texelFetch(illumVariance, p, 0);
-    vec4 ndP = texelFetch(normalDepth, p, 0);
-    vec4 gmP = texelFetch(gradientMesh, p, 0);
+    vec4 centre = texelFetch(illum_variance, p, 0);
+    vec4 ndP = texelFetch(normal_depth, p, 0);
+    vec4 gmP = texelFetch(gradient_mesh, p, 0);
     if (!hasSurface(ndP, gmP)) {
         // Background: nothing to stop edges with, so it is left as it is.
         imageStore(filtered, p, vec4(centre.rgb, max(centre.a, 0.0)));
@@ -49,7 +49,7 @@ void main() {
     }
     float lumP = dot(centre.rgb, kRec709);
     // Eq. 5's denominator, > 0 by luminanceEpsilon.
-    float lumScale = params.sigmaL * sqrt(max(texelFetch(prefilteredVariance, p, 0).r, 0.0)) +
+    float lumScale = params.sigmaL * sqrt(max(texelFetch(prefiltered_variance, p, 0).r, 0.0)) +
                      params.luminanceEpsilon;
     float depthEps = max(params.depthEpsilon * abs(ndP.w), kMinDepthEpsilon);
 
@@ -63,11 +63,11 @@ void main() {
             if (!hushInside(q, size)) {
                 continue;
             }
-            vec4 c = texelFetch(illumVariance, q, 0);
+            vec4 c = texelFetch(illum_variance, q, 0);
             float w = 1.0;
             if (dx != 0 || dy != 0) {
-                vec4 ndQ = texelFetch(normalDepth, q, 0);
-                vec4 gmQ = texelFetch(gradientMesh, q, 0);
+                vec4 ndQ = texelFetch(normal_depth, q, 0);
+                vec4 gmQ = texelFetch(gradient_mesh, q, 0);
                 if (!hasSurface(ndQ, gmQ)) {
                     continue;
                 }

@@ -11,8 +11,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform texture2D illumination;
 layout(set = 0, binding = 1) uniform texture2D reprojection;
-layout(set = 0, binding = 2) uniform texture2D colorHistory;
-layout(set = 0, binding = 3) uniform texture2D momentsHistory;
+layout(set = 0, binding = 2) uniform texture2D color_history;
+layout(set = 0, binding = 3) uniform texture2D moments_history;
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D color;
 layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D moments;
 
@@ -43,8 +43,8 @@ void main() {
         imageStore(moments, p, vec4(mu, 1.0, 0.0));
         return;
     }
-    vec3 prevColor = fetchFootprint(colorHistory, f).rgb;
-    vec4 prevMoments = fetchFootprint(momentsHistory, f);
+    vec3 prevColor = fetchFootprint(color_history, f).rgb;
+    vec4 prevMoments = fetchFootprint(moments_history, f);
     float n = min(max(prevMoments.z, 0.0) + 1.0, max(params.maxHistoryLength, 1.0));
     float a = max(params.alpha, 1.0 / n);            // n >= 1
     float am = max(params.momentsAlpha, 1.0 / n);

@@ -10,9 +10,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform texture2D color;
 layout(set = 0, binding = 1) uniform texture2D moments;
-layout(set = 0, binding = 2) uniform texture2D normalDepth;
-layout(set = 0, binding = 3) uniform texture2D gradientMesh;
-layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D colorVariance;
+layout(set = 0, binding = 2) uniform texture2D normal_depth;
+layout(set = 0, binding = 3) uniform texture2D gradient_mesh;
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D illum_variance;
 
 layout(push_constant) uniform Params {
     float minHistoryLength;
@@ -34,7 +34,7 @@ float geometricWeight(vec4 centre, vec2 gradient, vec4 other, ivec2 offset) {
 
 void main() {
     ivec2 p = hushPixel();
-    ivec2 size = imageSize(colorVariance);
+    ivec2 size = imageSize(illum_variance);
     if (!hushInside(p, size)) {
         return;
     }
@@ -42,12 +42,12 @@ void main() {
     vec4 mu = texelFetch(moments, p, 0);
     float n = max(mu.z, 1.0);
     if (n >= params.minHistoryLength) {
-        imageStore(colorVariance, p, vec4(c, max(0.0, mu.y - mu.x * mu.x)));
+        imageStore(illum_variance, p, vec4(c, max(0.0, mu.y - mu.x * mu.x)));
         return;
     }
 
-    vec4 centre = texelFetch(normalDepth, p, 0);
-    vec2 gradient = texelFetch(gradientMesh, p, 0).xy;
+    vec4 centre = texelFetch(normal_depth, p, 0);
+    vec2 gradient = texelFetch(gradient_mesh, p, 0).xy;
     float sumW = 1.0;   // the centre, whatever its normal
     vec3 sumC = c;
     vec2 sumMu = mu.xy;
@@ -57,7 +57,7 @@ void main() {
             if ((dx == 0 && dy == 0) || !hushInside(q, size)) {
                 continue;
             }
-            float w = geometricWeight(centre, gradient, texelFetch(normalDepth, q, 0), ivec2(dx, dy));
+            float w = geometricWeight(centre, gradient, texelFetch(normal_depth, q, 0), ivec2(dx, dy));
             if (w > 0.0) {
                 sumW += w;
                 sumC += w * texelFetch(color, q, 0).rgb;
@@ -71,5 +71,5 @@ void main() {
     if (params.shortHistoryBoost != 0u) {
         variance *= params.minHistoryLength / n;
     }
-    imageStore(colorVariance, p, vec4(meanC, variance));
+    imageStore(illum_variance, p, vec4(meanC, variance));
 }

@@ -8,14 +8,14 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform texture2D illumVariance;
-layout(set = 0, binding = 1, r32f) uniform writeonly image2D variance;
+layout(set = 0, binding = 0) uniform texture2D illum_variance;
+layout(set = 0, binding = 1, r32f) uniform writeonly image2D prefiltered_variance;
 
 const float kGauss[2] = float[2](0.5, 0.25);
 
 void main() {
     ivec2 p = hushPixel();
-    ivec2 size = imageSize(variance);
+    ivec2 size = imageSize(prefiltered_variance);
     if (!hushInside(p, size)) {
         return;
     }
@@ -28,10 +28,10 @@ void main() {
                 continue;
             }
             float g = kGauss[abs(dx)] * kGauss[abs(dy)];
-            sum += g * texelFetch(illumVariance, q, 0).a;
+            sum += g * texelFetch(illum_variance, q, 0).a;
             weightSum += g;
         }
     }
     // The centre is always inside: weightSum >= 1/4.
-    imageStore(variance, p, vec4(sum / weightSum, 0.0, 0.0, 0.0));
+    imageStore(prefiltered_variance, p, vec4(sum / weightSum, 0.0, 0.0, 0.0));
 }

@@ -48,40 +48,47 @@ std::vector<uint32_t> readOutput(const RenderGraph& graph, TextureHandle output,
     return download(graph.outputTexture(output), graph.outputState(output), device);
 }
 
+rhi::PushConstants combineParams(const rhi::ComputePipeline& combine, const CombineParams& p) {
+    rhi::PushConstants params(combine);
+    params.set("mulA", p.mulA).set("mulB", p.mulB).set("add", p.add).set("rotate", p.rotate);
+    return params;
+}
+
 TextureHandle addFill(RenderGraph& graph, const Pipelines& pipelines, const std::string& name, uint32_t seed,
                       SizeSpec size) {
-    TextureHandle result;
     const auto pipeline = pipelines.fill;
-    graph.addPass(name, [&](PassBuilder& b) {
-        auto dst = b.write("dst", b.create(name, {.format = kFormat, .size = size}));
-        auto group = b.bindGroup(pipeline, 0, {{.name = "dst", .texture = dst}});
-        result = dst;
-        return [=](PassContext& ctx) {
-            const auto extent = ctx.texture(dst).size();
-            ctx.dispatch(pipeline, group, extent, seed);
-        };
-    });
-    return result;
+    rhi::PushConstants params(pipeline);
+    params.set("seed", seed);
+    struct Out {
+        TextureHandle dst;
+    };
+    return graph
+        .addPass<Out>(name,
+                      [&](PassBuilder& b, Out& o) {
+                          o.dst = b.write("dst", b.create(name, {.format = kFormat, .size = size}));
+                          const auto group = b.bindGroup(pipeline);
+                          return [=](PassContext& ctx) { ctx.dispatch(pipeline, group, ctx.texture(o.dst).size(), params); };
+                      })
+        .dst;
 }
 
 TextureHandle addCombine(RenderGraph& graph, const Pipelines& pipelines, const std::string& name, TextureHandle a,
-                         TextureHandle b, const CombineParams& params, SizeSpec size) {
-    TextureHandle result;
+                         TextureHandle b, const CombineParams& combine, SizeSpec size) {
     const auto pipeline = pipelines.combine;
-    graph.addPass(name, [&](PassBuilder& builder) {
-        auto srcA = builder.read("a", a);
-        auto srcB = b == a ? srcA : builder.read("b", b);
-        auto dst = builder.write("dst", builder.create(name, {.format = kFormat, .size = size}));
-        auto group = builder.bindGroup(
-            pipeline, 0,
-            {{.name = "srcA", .texture = srcA}, {.name = "srcB", .texture = srcB}, {.name = "dst", .texture = dst}});
-        result = dst;
-        return [=](PassContext& ctx) {
-            const auto extent = ctx.texture(dst).size();
-            ctx.dispatch(pipeline, group, extent, params);
-        };
-    });
-    return result;
+    const auto params = combineParams(pipeline, combine);
+    struct Out {
+        TextureHandle dst;
+    };
+    return graph
+        .addPass<Out>(name,
+                      [&](PassBuilder& builder, Out& o) {
+                          builder.read("a", a);
+                          builder.read("b", b);
+                          o.dst = builder.write("dst", builder.create(name, {.format = kFormat, .size = size}));
+                          const auto group = builder.bindGroup(pipeline);
+                          return [=](PassContext& ctx) { ctx.dispatch(pipeline, group, ctx.texture(o.dst).size(), params); };
+                      })
+        .dst;
 }
 
 namespace {
@@ -89,19 +96,20 @@ namespace {
 TextureHandle addCopyPass(RenderGraph& graph, const rhi::ComputePipeline& pipeline, const std::string& name,
                           TextureHandle src, TextureHandle dst, const std::string& createName, SizeSpec size,
                           uint32_t add) {
-    TextureHandle result;
-    graph.addPass(name, [&](PassBuilder& b) {
-        auto in = b.read("src", src);
-        auto target = dst.valid() ? dst : b.create(createName, {.format = kFormat, .size = size});
-        auto out = b.write("dst", target);
-        auto group = b.bindGroup(pipeline, 0, {{.name = "src", .texture = in}, {.name = "dst", .texture = out}});
-        result = out;
-        return [=](PassContext& ctx) {
-            const auto extent = ctx.texture(out).size();
-            ctx.dispatch(pipeline, group, extent, add);
-        };
-    });
-    return result;
+    rhi::PushConstants params(pipeline);
+    params.set("add", add);
+    struct Out {
+        TextureHandle dst;
+    };
+    return graph
+        .addPass<Out>(name,
+                      [&](PassBuilder& b, Out& o) {
+                          b.read("src", src);
+                          o.dst = b.write("dst", dst.valid() ? dst : b.create(createName, {.format = kFormat, .size = size}));
+                          const auto group = b.bindGroup(pipeline);
+                          return [=](PassContext& ctx) { ctx.dispatch(pipeline, group, ctx.texture(o.dst).size(), params); };
+                      })
+        .dst;
 }
 
 } // namespace

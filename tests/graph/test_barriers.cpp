@@ -50,15 +50,12 @@ TEST_CASE("barriers: two readers of one texture get no barrier between them", "[
         const auto u = addCopy(g, p, "B", t, 2);
         const auto v = addCopy(g, p, "C", t, 3);
         g.addPass("D", [&](PassBuilder& b) {
-            const auto srcA = b.read("a", u);
-            const auto srcB = b.read("b", v);
-            const auto dst = b.write("dst", out);
-            const auto group = b.bindGroup(p.combine, 0,
-                                           {{.name = "srcA", .texture = srcA},
-                                            {.name = "srcB", .texture = srcB},
-                                            {.name = "dst", .texture = dst}});
-            return [=, pipeline = p.combine](PassContext& ctx) {
-                ctx.dispatch(pipeline, group, {kW, kH}, CombineParams{3, 5, 7, 2});
+            b.read("a", u);
+            b.read("b", v);
+            b.write("dst", out);
+            const auto group = b.bindGroup(p.combine);
+            return [=, pipeline = p.combine, params = combineParams(p.combine, {3, 5, 7, 2})](PassContext& ctx) {
+                ctx.dispatch(pipeline, group, {kW, kH}, params);
             };
         });
         g.compile();

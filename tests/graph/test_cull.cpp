@@ -29,6 +29,7 @@ TEST_CASE("cull: a hand-built model keeps what reaches the outside, transitively
         textureDecl("display", ResourceOrigin::Imported, 2),   // 9
         textureDecl("unused", ResourceOrigin::Transient, 2),   // 10
     };
+    m.resources[7].historySource = 8;   // last frame's "acc"
     m.resources[2].output = true;
     m.passes = {
         passDecl("makeA", {readOf(0, 0), writeOf(1, 0)}),                // 0: b and others need a

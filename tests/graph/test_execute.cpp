@@ -263,17 +263,17 @@ TEST_CASE("execute: running a compiled graph frame after frame allocates nothing
         "input", input, {.initialState = ResourceState::StorageRead, .finalState = ResourceState::StorageRead});
     TextureHandle acc;
     s.g.addPass("accumulate", [&](PassBuilder& b) {
-        const auto history = b.read("history", s.g.history("acc", {.format = kFormat}));
-        const auto src = b.read("input", in);
-        acc = b.write("acc", b.create("acc", {.format = kFormat}));
-        const auto seen = b.write("seen", b.create("seen", {.format = kFormat}));
-        const auto group = b.bindGroup(s.p.accumulate, 0,
-                                       {{.name = "history", .texture = history},
-                                        {.name = "inputImage", .texture = src},
-                                        {.name = "acc", .texture = acc},
-                                        {.name = "seen", .texture = seen}});
-        return [group, pipeline = s.p.accumulate](PassContext& ctx) {
-            const uint32_t params[2] = {ctx.historyValid() ? 1u : 0u, 1u};
+        const auto sum = b.create("acc", {.format = kFormat});
+        b.read("history", s.g.history(sum));
+        b.read("current", in);
+        acc = b.write("acc", sum);
+        b.write("seen", b.create("seen", {.format = kFormat}));
+        const auto group = b.bindGroup(s.p.accumulate);
+        rhi::PushConstants params(s.p.accumulate);
+        params.set("add", 1u);
+        const auto historyValid = params.slot("historyValid", rhi::ScalarType::Uint32);
+        return [group, pipeline = s.p.accumulate, params, historyValid](PassContext& ctx) mutable {
+            params.set(historyValid, ctx.historyValid() ? 1u : 0u);
             ctx.dispatch(pipeline, group, {64u, 48u}, params);
         };
     });

@@ -36,24 +36,18 @@ struct AccumulateGraph {
         g.setOutputSize({kW, kH});
         const auto in = g.importTexture(
             "input", input, {.initialState = ResourceState::StorageRead, .finalState = ResourceState::StorageRead});
-        const auto last = g.history("acc", {.format = kFormat});
         g.addPass("accumulate", [&](PassBuilder& b) {
-            const auto history = b.read("history", last);
-            const auto src = b.read("input", in);
-            acc = b.write("acc", b.create("acc", {.format = kFormat}));
+            const auto sum = b.create("acc", {.format = kFormat});
+            b.read("history", g.history(sum));
+            b.read("current", in);
+            acc = b.write("acc", sum);
             seen = b.write("seen", b.create("seen", {.format = kFormat}));
-            const auto group = b.bindGroup(p.accumulate, 0,
-                                           {{.name = "history", .texture = history},
-                                            {.name = "inputImage", .texture = src},
-                                            {.name = "acc", .texture = acc},
-                                            {.name = "seen", .texture = seen}});
-            return [this, group, pipeline = p.accumulate](PassContext& ctx) {
+            const auto group = b.bindGroup(p.accumulate);
+            return [this, group, pipeline = p.accumulate, params = rhi::PushConstants(p.accumulate)](
+                       PassContext& ctx) mutable {
                 const uint64_t frame = ctx.frameIndex();
                 if (frame < kMaxFrames) historyValid[frame] = ctx.historyValid() ? 1 : 0;
-                const struct {
-                    uint32_t valid;
-                    uint32_t add;
-                } params{ctx.historyValid() ? 1u : 0u, addOf(frame)};
+                params.set("historyValid", ctx.historyValid()).set("add", addOf(frame));
                 ctx.dispatch(pipeline, group, {kW, kH}, params);
             };
         });
@@ -146,4 +140,49 @@ TEST_CASE("history: a recompile starts it over (invalid for one frame)", "[graph
     CHECK(a.historyValid[2] == 0);
     CHECK(a.historyValid[3] == 1);
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(validation);
+}
+
+TEST_CASE("history: declared before its source and bound to it later, a pass reads a later pass's last value",
+          "[graph][history][gpu]") {
+    ValidationScope validation;
+    const auto p = makePipelines();
+    RenderGraph g(gpu().device, {.label = "history.feedback"});
+    g.setOutputSize({kW, kH});
+    // "early" copies last frame's "late" (feedback); "late" = early + 5. Frame 0 reads an
+    // invalid history (copy.comp reads it anyway: the first frame's value is whatever
+    // the texture held), so only frames 1 and 2 are checked.
+    const auto lastLate = g.history("late.history", {.format = kFormat});
+    const auto early = addCopy(g, p, "early", lastLate, 0);
+    const auto late = addCopy(g, p, "late", early, 5);
+    g.bindHistory(lastLate, late);
+    g.markOutput(late);
+    CHECK(g.historySource(lastLate) == late);
+    std::vector<uint32_t> previous;
+    for (int frame = 0; frame < 3; ++frame) {
+        g.execute();
+        g.waitIdle();
+        const auto now = readOutput(g, late, gpu().device);
+        if (frame > 0)
+            for (size_t i = 0; i < now.size(); ++i) REQUIRE(now[i] == previous[i] + 5);
+        previous = now;
+    }
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(validation);
+}
+
+TEST_CASE("history: one history per texture, bound once, and only to a texture a pass creates", "[graph][history]") {
+    const auto p = makePipelines();
+    RenderGraph g(gpu().device, {.label = "history.binding"});
+    const auto a = addFill(g, p, "a", 1);
+    const auto b = addFill(g, p, "b", 2);
+    const auto c = addFill(g, p, "c", 3);
+    CHECK(g.history(a) == g.history(a));   // asking twice gives the same history
+    const auto free = g.history("free", {.format = kFormat});
+    CHECK_THROWS_WITH(g.bindHistory(free, a), Catch::Contains("'a' already has a history"));
+    g.bindHistory(free, b);
+    CHECK_THROWS_WITH(g.bindHistory(free, c), Catch::Contains("history 'free' is already bound to 'b'"));
+    const auto imported = g.importTexture("imported", makeTexture("imported", 4, 4));
+    CHECK_THROWS_WITH(g.history(imported), Catch::Contains("the source must be a texture a pass of graph"));
+    CHECK(g.findTexture("b") == b);
+    CHECK(g.findTexture("imported") == imported);
+    CHECK_FALSE(g.findTexture("nothing").valid());
 }

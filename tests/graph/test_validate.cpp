@@ -147,11 +147,12 @@ TEST_CASE("validate: an unconnected required input is an error, an optional one 
     ok.addPass("svgf.reproject", [&](PassBuilder& b) {
         const auto motionIn = b.read("motion", TextureHandle{}, {.optional = true});
         sawInvalid = !motionIn.valid();
-        const auto src = b.read("src", source);
+        b.read("src", source);
         result = b.write("dst", b.create("reprojected", {.format = kFormat}));
-        const auto group =
-            b.bindGroup(p.copy, 0, {{.name = "src", .texture = src}, {.name = "dst", .texture = result}});
-        return [=, pipeline = p.copy](PassContext& ctx) { ctx.dispatch(pipeline, group, {32u, 32u}, uint32_t(1)); };
+        const auto group = b.bindGroup(p.copy);
+        rhi::PushConstants params(p.copy);
+        params.set("add", 1u);
+        return [=, pipeline = p.copy](PassContext& ctx) { ctx.dispatch(pipeline, group, {32u, 32u}, params); };
     });
     ok.markOutput(result);
     CHECK(sawInvalid);
@@ -263,7 +264,7 @@ TEST_CASE("validate: a cycle names its passes, and order() refuses it (hand-buil
 TEST_CASE("validate: history with no texture to come from", "[graph][validate][gpu]") {
     ValidationScope validation;
     const std::string expected =
-        "history 'ghost' is read, but no pass creates a texture named 'ghost' for it to come from";
+        "history 'ghost' is read, but bound to no texture to come from";
     GraphModel m;
     m.resources = {textureDecl("ghost", ResourceOrigin::History, 1), textureDecl("o", ResourceOrigin::Transient, 2)};
     m.passes = {passDecl("temporal", {readOf(0, 0, "history"), writeOf(1, 0)})};
@@ -276,6 +277,7 @@ TEST_CASE("validate: history with no texture to come from", "[graph][validate][g
     // Writing a history is an error too: it is last frame's value, read-only.
     GraphModel w;
     w.resources = {textureDecl("acc", ResourceOrigin::History, 2), textureDecl("acc", ResourceOrigin::Transient, 2)};
+    w.resources[0].historySource = 1;
     w.passes = {passDecl("bad", {writeOf(0, 0, "history")}), passDecl("acc", {writeOf(1, 0)})};
     CHECK_THAT(problems(w), Contains("output 'history' of pass 'bad' writes history 'acc', which is read-only"));
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(validation);
@@ -294,30 +296,50 @@ TEST_CASE("validate: every problem of a graph is reported at once", "[graph][val
     CHECK_THAT(message, Contains("input 'extra' of pass 'a' uses an unknown resource handle (#9)"));
 }
 
-TEST_CASE("validate: binding a resource the pass did not declare fails at compile", "[graph][validate][gpu]") {
+TEST_CASE("validate: a shader binding with no port of its name, and a port no binding takes, fail at compile",
+          "[graph][validate][gpu]") {
     ValidationScope validation;
     const auto p = makePipelines();
-    RenderGraph g(gpu().device, {.label = "validate.undeclared"});
-    g.setOutputSize({32, 32});
-    const auto a = addFill(g, p, "a", 1);
-    const auto b = addFill(g, p, "b", 2);
-    TextureHandle out;
-    g.addPass("sneaky", [&](PassBuilder& builder) {
-        const auto srcA = builder.read("a", a);   // b is bound below but never declared
-        out = builder.write("dst", builder.create("sneaky.out", {.format = kFormat}));
-        const auto group = builder.bindGroup(
-            p.combine, 0,
-            {{.name = "srcA", .texture = srcA}, {.name = "srcB", .texture = b}, {.name = "dst", .texture = out}});
-        return [=, pipeline = p.combine](PassContext& ctx) {
-            ctx.dispatch(pipeline, group, {32u, 32u}, CombineParams{});
-        };
-    });
-    g.markOutput(out);
-    g.markOutput(b);
-    const auto error = test::errorFrom([&] { g.compile(); });
-    REQUIRE(error);
-    CHECK(error->kind() == ErrorKind::InvalidArgument);
-    CHECK_THAT(error->what(), Contains("pass 'sneaky' binds 'b' to 'srcB' but declares no read or write of it"));
+    {
+        RenderGraph g(gpu().device, {.label = "validate.unbound"});
+        g.setOutputSize({32, 32});
+        const auto a = addFill(g, p, "a", 1);
+        TextureHandle out;
+        g.addPass("sneaky", [&](PassBuilder& builder) {
+            builder.read("a", a);   // combine.comp also reads 'b', which this pass does not declare
+            out = builder.write("dst", builder.create("sneaky.out", {.format = kFormat}));
+            const auto group = builder.bindGroup(p.combine);
+            return [=, pipeline = p.combine, params = combineParams(p.combine, {})](PassContext& ctx) {
+                ctx.dispatch(pipeline, group, {32u, 32u}, params);
+            };
+        });
+        g.markOutput(out);
+        const auto error = test::errorFrom([&] { g.compile(); });
+        REQUIRE(error);
+        CHECK(error->kind() == ErrorKind::BindingMismatch);
+        CHECK_THAT(error->what(), Contains("pass 'sneaky': binding 'b' (set 0, binding 1) of shader") &&
+                                      Contains("has no port of that name; the pass's ports: 'a', 'dst'"));
+    }
+    {
+        RenderGraph g(gpu().device, {.label = "validate.misspelt"});
+        g.setOutputSize({32, 32});
+        const auto a = addFill(g, p, "a", 1);
+        TextureHandle out;
+        g.addPass("misspelt", [&](PassBuilder& builder) {
+            builder.read("src", a);
+            builder.read("source", a);   // no binding of copy.comp is called that
+            out = builder.write("dst", builder.create("misspelt.out", {.format = kFormat}));
+            const auto group = builder.bindGroup(p.copy);
+            rhi::PushConstants params(p.copy);
+            params.set("add", 0u);
+            return [=, pipeline = p.copy](PassContext& ctx) { ctx.dispatch(pipeline, group, {32u, 32u}, params); };
+        });
+        g.markOutput(out);
+        const auto error = test::errorFrom([&] { g.compile(); });
+        REQUIRE(error);
+        CHECK(error->kind() == ErrorKind::BindingMismatch);
+        CHECK_THAT(error->what(), Contains("pass 'misspelt': port 'source' is bound to no binding of its shader"));
+    }
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(validation);
 }
 
@@ -329,8 +351,10 @@ TEST_CASE("validate: a bind group whose storage format differs from the texture'
     TextureHandle out;
     g.addPass("mismatch", [&](PassBuilder& b) {
         out = b.write("dst", b.create("wide", {.format = rhi::Format::RGBA16Float}));   // fill.comp wants r32ui
-        const auto group = b.bindGroup(p.fill, 0, {{.name = "dst", .texture = out}});
-        return [=, pipeline = p.fill](PassContext& ctx) { ctx.dispatch(pipeline, group, {32u, 32u}, uint32_t(0)); };
+        const auto group = b.bindGroup(p.fill);
+        rhi::PushConstants params(p.fill);
+        params.set("seed", 0u);
+        return [=, pipeline = p.fill](PassContext& ctx) { ctx.dispatch(pipeline, group, {32u, 32u}, params); };
     });
     g.markOutput(out);
     const auto error = test::errorFrom([&] { g.compile(); });

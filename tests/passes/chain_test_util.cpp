@@ -73,9 +73,7 @@ std::vector<graph::TextureHandle> markHistorySources(graph::RenderGraph& graph) 
     const auto& model = graph.model();
     for (uint32_t r = 0; r < model.resources.size(); ++r) {
         if (model.resources[r].origin != graph::ResourceOrigin::History) continue;
-        const uint32_t s = model.historySource(r);
-        if (s == graph::kNone) continue;
-        sources.push_back({s, model.resources[s].versionCount - 1});
+        if (const auto source = graph.historySource({r, 0}); source.valid()) sources.push_back(source);
     }
     for (auto h : sources) graph.markOutput(h);
     return sources;

@@ -28,11 +28,11 @@ constexpr const char* kBmfrByNodes = R"({
     {"id": "reproject", "node": "reproject", "inputs": {"motion": "input.motion", "surface": "surface"}},
     {"id": "demod", "node": "demodulate",
      "inputs": {"radiance": "input.color", "albedo": "input.albedo", "emission": "input.emission"}},
-    {"id": "acc", "node": "bmfr.accumulate", "inputs": {"input": "demod", "reprojection": "reproject"}},
+    {"id": "acc", "node": "bmfr.accumulate", "inputs": {"current": "demod", "reprojection": "reproject"}},
     {"id": "fit", "node": "bmfr.fit",
      "inputs": {"illumination": "acc", "normal": "input.normal", "position": "input.position"}},
     // the same decision as the first accumulation (Sec. 3.3)
-    {"id": "post", "node": "bmfr.accumulate", "inputs": {"input": "fit", "reprojection": "reproject"},
+    {"id": "post", "node": "bmfr.accumulate", "inputs": {"current": "fit", "reprojection": "reproject"},
      "settings": {"minWeight": 0.1}},
     {"id": "remod", "node": "remodulate",
      "inputs": {"a": "post", "albedo": "input.albedo", "emission": "input.emission"}},
@@ -112,7 +112,7 @@ TEST_CASE("a chain file based on bmfr applies its settings", "[bmfr][bmfr-chain]
     CHECK(!bmfr->settings().fit.offsetBlocks);
     REQUIRE(bmfr->settings().fit.features.size() == 8);
     CHECK(bmfr->settings().fit.features.back() == passes::BmfrFeature::Roughness);
-    CHECK(!bmfr->settings().useTaa);
+    CHECK(!bmfr->settings().back.useTaa);
     // The roughness feature makes roughness an input.
     const auto inputs = other->inputs();
     CHECK(std::find(inputs.begin(), inputs.end(), passes::InputChannel::Roughness) != inputs.end());
@@ -124,7 +124,7 @@ TEST_CASE("a chain file based on bmfr applies its settings", "[bmfr][bmfr-chain]
     CHECK(d.fit.epsilon == 0.01f);
     CHECK(d.fit.features.size() == 10);
     CHECK(d.fit.offsetBlocks);
-    CHECK(d.useTaa);
+    CHECK(d.back.useTaa);
 
     const std::vector<tracer::Frame> frames(cornellSequence().begin(), cornellSequence().begin() + 2);
     const auto a = runSequence(std::move(same), frames);
@@ -140,11 +140,11 @@ TEST_CASE("bmfr chain settings errors name the field", "[bmfr][bmfr-chain][chain
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"blockSize": 24}}})"),
                Contains("settings.fit.blockSize") && Contains("16, 32 or 64"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"features": ["one", "nx"]}}})"),
-               Contains("settings.fit.features[1]") && Contains("unknown feature 'nx'") && Contains("'normalX'"));
+               Contains("settings.fit.features[1]") && Contains("unknown value 'nx'") && Contains("'normalX'"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"features": []}}})"),
                Contains("settings.fit.features"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"post": {}}})"),
-               Contains("settings.post: unknown field") && Contains("'postAccumulate'"));
+               Contains("settings: unknown field 'post'") && Contains("postAccumulate"));
     REQUIRE_THROWS_AS(passes::BmfrChain({.accumulate = {.minWeight = 0.0f}}), Error);
     CHECK(passes::makeBuiltinChain("bmfr")->name() == "bmfr");
 }

@@ -68,7 +68,7 @@ TEST_CASE("a chain file based on svgf applies its settings", "[chain][chain-file
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 
-TEST_CASE("an svgf chain written node by node runs", "[chain][chain-file]") {
+TEST_CASE("an svgf chain written node by node reproduces SvgfChain on one lighting term", "[chain][chain-file]") {
     test::ValidationScope scope;
     auto chain = passes::parseChainJson(R"({
       "nodes": [
@@ -76,8 +76,8 @@ TEST_CASE("an svgf chain written node by node runs", "[chain][chain-file]") {
          "inputs": {"normal": "input.normal", "depth": "input.depth", "meshid": "input.meshid"}},
         {"id": "reproject", "node": "reproject", "inputs": {"motion": "input.motion", "surface": "surface"}},
         {"id": "demod", "node": "demodulate", "inputs": {"radiance": "input.color", "albedo": "input.albedo"}},
-        {"id": "temporal", "node": "svgf.temporal", "inputs": {"illumination": "demod", "reprojection": "reproject"},
-         "settings": {"colorHistory": "atrous"}},
+        {"id": "temporal", "node": "svgf.temporal",
+         "inputs": {"illumination": "demod", "reprojection": "reproject", "color_history": "history:atrous.level0"}},
         {"id": "variance", "node": "svgf.variance", "inputs": {"temporal": "temporal", "surface": "surface"}},
         {"id": "atrous", "node": "svgf.atrous", "inputs": {"illum_variance": "variance", "surface": "surface"}},
         {"id": "remod", "node": "remodulate", "inputs": {"a": "atrous", "albedo": "input.albedo"}},
@@ -89,13 +89,22 @@ TEST_CASE("an svgf chain written node by node runs", "[chain][chain-file]") {
     const std::vector<tracer::Frame> frames(cornellSequence().begin(), cornellSequence().begin() + 3);
     const auto out = runSequence(std::move(chain), frames);
     CHECK(nonFinite(out.back()) == 0);
+    // The same stages as SvgfChain filtering the colour as one term, emission not separated.
+    passes::SvgfSettings oneTerm;
+    oneTerm.front.separateEmission = false;
+    oneTerm.splitLighting = false;
+    const auto builtin = runSequence(std::make_unique<passes::SvgfChain>(oneTerm), frames);
+    for (size_t f = 0; f < frames.size(); ++f) {
+        INFO("frame " << f);
+        CHECK(relativeL1(out[f], builtin[f]) == 0.0);
+    }
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 
 TEST_CASE("chain file errors name the file, the field and the problem", "[chain][chain-file]") {
     using Catch::Contains;
     CHECK_THAT(errorOf(R"({"base": "svgf", "settings": {"atrous": {"iterashuns": 2}}})"),
-               Contains("chain.json: settings.atrous.iterashuns: unknown field") && Contains("'iterations'"));
+               Contains("chain.json: settings.atrous: unknown field 'iterashuns'") && Contains("iterations"));
     CHECK_THAT(errorOf(R"({"base": "svgf", "settings": {"atrous": {"iterations": -1}}})"),
                Contains("settings.atrous.iterations") && Contains("integer"));
     CHECK_THAT(errorOf(R"({"base": "bmfr9"})"), Contains("unknown chain 'bmfr9'"));
@@ -110,7 +119,7 @@ TEST_CASE("chain file errors name the file, the field and the problem", "[chain]
                Contains("defined after this one"));
     CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap", "inputs": {"radiance": "input.color", "hdr": "x"}}],
                           "outputs": {"display": "t"}})"),
-               Contains("nodes[0].inputs.hdr: unknown field") && Contains("'radiance'"));
+               Contains("nodes[0].inputs: unknown field 'hdr'") && Contains("radiance"));
     CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap"}], "outputs": {"display": "t"}})"),
                Contains("input 'radiance' of node 't' (tonemap) is not connected"));
     CHECK_THAT(errorOf(R"({"nodes": [{"id": "s", "node": "surface", "inputs": {"normal": "input.normal",
@@ -128,10 +137,19 @@ TEST_CASE("chain file errors name the file, the field and the problem", "[chain]
                           "outputs": {"display": "a"}})"),
                Contains("nodes[1].id: 'a' is already used"));
     CHECK_THAT(errorOf(R"({"nodes": [{"id": "d", "node": "demodulate", "inputs": {"radiance": "input.color", "albedo": "input.albedo"}},
-                                     {"id": "t", "node": "svgf.temporal", "inputs": {"illumination": "d", "reprojection": "d"},
-                                      "settings": {"colorHistory": "d"}}],
+                                     {"id": "t", "node": "svgf.temporal",
+                                      "inputs": {"illumination": "d", "reprojection": "d", "color_history": "history:nope"}}],
                           "outputs": {"display": "d"}})"),
-               Contains("colorHistory: 'd' is not an svgf.atrous node"));
+               Contains("nodes[1].inputs.color_history: 'nope' refers to no node called 'nope'"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "s", "node": "surface",
+                                      "inputs": {"normal": "input.normal", "depth": "input.depth", "meshid": "input.meshid"}},
+                                     {"id": "t", "node": "tonemap", "inputs": {"radiance": "history:s"}}],
+                          "outputs": {"display": "t"}})"),
+               Contains("nodes[1].inputs.radiance: 'history:s': only a node's texture output has a history"));
+    CHECK_THAT(errorOf(R"({"nodes": [{"id": "t", "node": "tonemap", "inputs": {"radiance": "later"}},
+                                     {"id": "later", "node": "tonemap", "inputs": {"radiance": "input.color"}}],
+                          "outputs": {"display": "t"}})"),
+               Contains("defined after this one") && Contains("\"history:later\""));
     auto missing = test::errorFrom([] { passes::makeChain("no/such/chain.json"); });
     REQUIRE(missing);
     CHECK_THAT(missing->what(), Contains("'no/such/chain.json' is neither a built-in chain"));

@@ -92,7 +92,7 @@ TEST_CASE("bmfr beats the noisy input, and with blocks scaled to 96x96 and no TA
     const Score paper = score(runSequence(std::make_unique<passes::BmfrChain>(), frames), frames, metrics);
     passes::BmfrSettings scaled;
     scaled.fit.blockSize = 16;
-    scaled.useTaa = false;
+    scaled.back.useTaa = false;
     const Score small = score(runSequence(std::make_unique<passes::BmfrChain>(scaled), frames), frames, metrics);
     std::printf("quality 96x96 cornell, 16 frames: SSIM noisy %.4f eaw %.4f bmfr %.4f (16-px blocks, no TAA %.4f) | "
                 "RMSE noisy %.4f eaw %.4f bmfr %.4f (%.4f) | temporal noisy %.5f eaw %.5f bmfr %.5f (%.5f)\n",

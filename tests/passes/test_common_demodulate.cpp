@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <hush/passes/common/demodulate.hpp>
+#include <hush/passes/common/remodulate.hpp>
 
 #include "reference/common_reference.hpp"
 

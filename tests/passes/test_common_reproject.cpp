@@ -281,7 +281,7 @@ TEST_CASE("reproject reads last frame's surface through surfaceHistory, frame af
     auto current = passes::addSurfacePass(t.ctx, "surface", t.input("normal", normal),
                                           t.input("depth", depth, rhi::Format::R32Float),
                                           t.input("meshid", mesh, rhi::Format::R32Float));
-    auto previous = passes::surfaceHistory(t.ctx, "surface");
+    auto previous = passes::surfaceHistory(t.ctx, current);
     auto mv = t.input("motion", constantMotion(w, h, 0.0f, 0.0f), rhi::Format::RG32Float);
     auto decision = passes::addReprojectPass(t.ctx, "reproject", mv, current, previous);
     t.graph.markOutput(decision);

@@ -53,12 +53,9 @@ std::vector<FloatImage> gpuLevels(const Scene& s, const passes::EawSettings& set
     auto last = passes::addEawAtrousLevels(t.ctx, "eaw", t.input("color", s.color), t.input("normal", s.normal),
                                            t.input("position", s.position), settings);
     std::vector<TextureHandle> levels;
-    const auto& resources = t.graph.model().resources;
     for (uint32_t i = 0; i < settings.iterations; ++i) {
-        const std::string name = "eaw.level." + std::to_string(i);
-        auto it = std::find_if(resources.begin(), resources.end(), [&](const auto& r) { return r.name == name; });
-        REQUIRE(it != resources.end());
-        levels.push_back({uint32_t(it - resources.begin()), it->versionCount - 1});
+        levels.push_back(t.graph.findTexture("eaw.level." + std::to_string(i)));
+        REQUIRE(levels.back().valid());
         t.graph.markOutput(levels.back());
     }
     if (!levels.empty()) CHECK(levels.back() == last);

@@ -65,12 +65,9 @@ passes::Surface upload(NodeHarness& t, const reference::SurfaceImages& s) {
 // The newest version of the transient called `name` (the node names its level
 // outputs; this also checks that they carry those names).
 TextureHandle transient(const graph::RenderGraph& g, const std::string& name) {
-    const auto& resources = g.model().resources;
-    for (uint32_t i = 0; i < resources.size(); ++i)
-        if (resources[i].name == name && resources[i].origin == graph::ResourceOrigin::Transient)
-            return {i, resources[i].versionCount - 1};
-    FAIL("no transient called " << name);
-    return {};
+    const auto handle = g.findTexture(name);
+    if (!handle.valid()) FAIL("no transient called " << name);
+    return handle;
 }
 
 // The chained levels on the GPU: every level's output.
@@ -142,7 +139,7 @@ TEST_CASE("svgf a-trous: levels are named passes and level 0 is usable as histor
     CHECK((none.filtered == in && none.firstLevel == in));
     auto result = passes::addSvgfAtrousLevels(t.ctx, "svgf", in, surface);
     // What the temporal stage will do: read last frame's first level.
-    auto last = t.graph.history("svgf.level.0", passes::fullSize());
+    auto last = t.graph.history(result.firstLevel);
     auto fromHistory = passes::addSvgfVariancePrefilterPass(t.ctx, "from_history", last);
     t.graph.markOutput(result.firstLevel);
     t.graph.markOutput(result.filtered);

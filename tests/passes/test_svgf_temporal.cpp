@@ -27,7 +27,7 @@ struct TemporalRig {
     TemporalRig(uint32_t w, uint32_t h, const passes::SvgfTemporalSettings& s = {}) : t({w, h}) {
         auto illumination = t.input("illumination", FloatImage(w, h, 4));
         auto decision = t.input("decision", FloatImage(w, h, 4));
-        out = passes::addSvgfTemporalPass(t.ctx, "temporal", illumination, decision, "temporal", s);
+        out = passes::addSvgfTemporalPass(t.ctx, "temporal", illumination, decision, {}, s);
         t.graph.markOutput(out.color);
         t.graph.markOutput(out.moments);
     }
@@ -171,7 +171,7 @@ TEST_CASE("svgf temporal after reproject follows a translating surface like the 
     const passes::Surface current{t.input("cur.nd", cur.normalDepth), t.input("cur.gm", cur.gradientMesh)};
     const passes::Surface previous{t.input("prev.nd", prev.normalDepth), t.input("prev.gm", prev.gradientMesh)};
     auto decision = passes::addReprojectPass(t.ctx, "reproject", mv, current, previous);
-    auto temporal = passes::addSvgfTemporalPass(t.ctx, "temporal", illum, decision, "temporal");
+    auto temporal = passes::addSvgfTemporalPass(t.ctx, "temporal", illum, decision);
     t.graph.markOutput(temporal.color);
     t.graph.markOutput(temporal.moments);
     reference::SvgfTemporalImages ref;

@@ -124,7 +124,7 @@ struct SequenceRig {
             for (uint32_t x = 0; x < w; ++x) flat.normalDepth.at(x, y, 2) = 1.0f, flat.normalDepth.at(x, y, 3) = 2.0f;
         auto illumination = t.input("illumination", FloatImage(w, h, 4));
         auto decision = t.input("decision", reference::identityDecision(w, h));
-        temporal = passes::addSvgfTemporalPass(t.ctx, "temporal", illumination, decision, "temporal");
+        temporal = passes::addSvgfTemporalPass(t.ctx, "temporal", illumination, decision);
         const passes::Surface surface{t.input("nd", flat.normalDepth), t.input("gm", flat.gradientMesh)};
         variance = passes::addSvgfVariancePass(t.ctx, "variance", temporal, surface);
         t.graph.markOutput(temporal.color);

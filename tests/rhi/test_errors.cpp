@@ -6,7 +6,7 @@
 #include <cstdlib>
 
 #include "support/gpu_context.hpp"
-#include "support/test_shaders.hpp"
+#include <hush_test_shaders.hpp>
 #include "vk_check.hpp"   // rhi/src: the private VkResult -> hush::Error translation
 
 using namespace hush::rhi;

@@ -16,7 +16,7 @@
 
 #include "support/gpu_context.hpp"
 #include "support/raw_vulkan.hpp"
-#include "support/test_shaders.hpp"
+#include <hush_test_shaders.hpp>
 
 using namespace hush::rhi;
 using namespace hush::test;

@@ -7,7 +7,7 @@
 #include <mutex>
 
 #include "support/gpu_context.hpp"
-#include "support/test_shaders.hpp"
+#include <hush_test_shaders.hpp>
 
 using namespace hush::rhi;
 using namespace hush::test;

@@ -5,7 +5,7 @@
 #include <memory>
 #include <mutex>
 
-#include "support/test_shaders.hpp"
+#include <hush_test_shaders.hpp>
 
 namespace hush::test {
 

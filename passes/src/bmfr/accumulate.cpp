@@ -3,18 +3,9 @@
 #include <cmath>
 
 #include <hush/core/error.hpp>
+#include <hush/passes/settings_push_constants.hpp>
 
 namespace hush::passes {
-
-namespace {
-// Push constants of shaders/bmfr/accumulate.comp (same order).
-struct AccumulateParams {
-    float minWeight;
-    float countCap;
-    uint32_t historyValid;
-    uint32_t pad = 0;
-};
-} // namespace
 
 uint32_t bmfrAccumulateCountCap(const BmfrAccumulateSettings& settings) {
     const float w = settings.minWeight;
@@ -27,34 +18,33 @@ uint32_t bmfrAccumulateCountCap(const BmfrAccumulateSettings& settings) {
     return uint32_t(std::ceil(1.0 / double(w) - 1e-5));
 }
 
-graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle input,
+graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle current,
                                            graph::TextureHandle reprojection, const BmfrAccumulateSettings& settings) {
     const uint32_t cap = bmfrAccumulateCountCap(settings);
     const bool half = settings.format == rhi::Format::RGBA16Float;
     // One shader per output format: the image's format qualifier must be literal.
     const rhi::ComputePipeline pipeline = ctx.pipelines.get(half ? "bmfr/accumulate_rgba16f" : "bmfr/accumulate");
-    // The node's own output last frame: colour in rgb, sample count in alpha.
-    const graph::TextureHandle history = ctx.graph.history(name, fullSize(settings.format));
-    graph::TextureHandle out;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
-        auto in = b.sample("current", input);
-        auto decision = b.sample("reprojection", reprojection);
-        auto prev = b.sample("history", history);
-        out = b.write("accumulated", b.create(name, fullSize(settings.format)));
-        auto group = b.bindGroup(pipeline, 0,
-                                 {{.name = "current", .texture = in},
-                                  {.name = "reprojection", .texture = decision},
-                                  {.name = "history", .texture = prev},
-                                  {.name = "accumulated", .texture = out}});
-        const graph::TextureHandle target = out;
-        const AccumulateParams base{settings.minWeight, float(cap), 0u};
-        return [=](graph::PassContext& pc) {
-            AccumulateParams params = base;
-            params.historyValid = pc.historyValid() ? 1u : 0u;
-            pc.dispatch(pipeline, group, pc.texture(target).size(), params);
+    rhi::PushConstants params(pipeline);
+    setFromSettings(params, settings);
+    params.set("countCap", float(cap));
+    const auto historyValid = params.slot("historyValid", rhi::ScalarType::Uint32);
+    struct Out {
+        graph::TextureHandle accumulated;
+    };
+    const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
+        b.sample("current", current);
+        b.sample("reprojection", reprojection);
+        const auto accumulated = b.create(name, fullSize(settings.format));
+        // The node's own output last frame: colour in rgb, sample count in alpha.
+        b.sample("history", ctx.graph.history(accumulated));
+        o.accumulated = b.write("accumulated", accumulated);
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) mutable {
+            params.set(historyValid, pc.historyValid() ? 1u : 0u);
+            pc.dispatch(pipeline, group, pc.texture(o.accumulated).size(), params);
         };
     });
-    return out;
+    return out.accumulated;
 }
 
 } // namespace hush::passes

@@ -3,20 +3,11 @@
 #include <cmath>
 
 #include <hush/core/error.hpp>
+#include <hush/passes/settings_push_constants.hpp>
 
 namespace hush::passes {
 
 namespace {
-
-// Mirrors fit.comp's push constants.
-struct FitParams {
-    uint32_t blockSize, offsetX, offsetY, blocksX;
-    uint32_t frame, featureCount;
-    float epsilon, flatRange, diagonalGuard, zeroColumn, dependentColumn;
-    uint32_t pad1 = 0;
-    uint32_t codes[8] = {};
-};
-static_assert(sizeof(FitParams) == 80);
 
 constexpr uint32_t kThreadsPerBlock = 128;   // fit.comp's local_size_x
 
@@ -85,63 +76,63 @@ uint64_t bmfrBlockBufferBytes(rhi::Extent2D image, const BmfrFitSettings& s) {
     return bx * by * uint64_t(s.blockSize) * s.blockSize * columns * sizeof(float);
 }
 
+namespace {
+// The constant part of fit.comp's push constants: settings, guards, feature codes.
+rhi::PushConstants fitParams(const rhi::ComputePipeline& pipeline, const BmfrFitSettings& settings) {
+    rhi::PushConstants params(pipeline);
+    setFromSettings(params, settings);
+    std::array<uint32_t, 8> codes{};   // one byte per feature, feature m in byte m
+    for (size_t m = 0; m < settings.features.size(); ++m) codes[m / 4] |= uint32_t(settings.features[m]) << (8 * (m % 4));
+    params.set("featureCount", uint32_t(settings.features.size()))
+        .set("flatRange", kBmfrFlatRange)
+        .set("diagonalGuard", kBmfrDiagonalGuard)
+        .set("zeroColumn", kBmfrZeroColumn)
+        .set("dependentColumn", kBmfrDependentColumn)
+        .set("codes", codes);
+    return params;
+}
+} // namespace
+
 graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, graph::TextureHandle illumination,
                                     const BmfrGuide& guide, const BmfrFitSettings& settings) {
     validate(settings, guide);
     // One shader per output format: the image's format qualifier must be literal.
     const rhi::ComputePipeline pipeline =
         ctx.pipelines.get(settings.format == rhi::Format::RGBA16Float ? "bmfr/fit_rgba16f" : "bmfr/fit");
-
-    FitParams params{};
-    params.blockSize = settings.blockSize;
-    params.featureCount = uint32_t(settings.features.size());
-    params.epsilon = settings.epsilon;
-    params.flatRange = kBmfrFlatRange;
-    params.diagonalGuard = kBmfrDiagonalGuard;
-    params.zeroColumn = kBmfrZeroColumn;
-    params.dependentColumn = kBmfrDependentColumn;
-    for (size_t m = 0; m < settings.features.size(); ++m)
-        params.codes[m / 4] |= uint32_t(settings.features[m]) << (8 * (m % 4));
+    rhi::PushConstants params = fitParams(pipeline, settings);
+    const auto offsetX = params.slot("offsetX", rhi::ScalarType::Uint32);
+    const auto offsetY = params.slot("offsetY", rhi::ScalarType::Uint32);
+    const auto blocksX = params.slot("blocksX", rhi::ScalarType::Uint32);
+    const auto frame = params.slot("frame", rhi::ScalarType::Uint32);
     const BmfrFitSettings s = settings;
-
-    graph::TextureHandle out;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
-        auto illum = b.sample("illumination", illumination);
-        // Guide slots no feature reads are bound to the illumination (the shader never
-        // reads them), so the pipeline has one layout whatever the feature set.
-        auto guideOr = [&](const char* port, graph::TextureHandle h) { return h.valid() ? b.sample(port, h) : illum; };
-        auto n = guideOr("normal", guide.normal);
-        auto w = guideOr("position", guide.position);
-        auto alb = guideOr("albedo", guide.albedo);
-        auto rough = guideOr("roughness", guide.roughness);
-        auto mesh = guideOr("meshId", guide.meshId);
+    struct Out {
+        graph::TextureHandle fitted;
+    };
+    const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
+        b.sample("illumination", illumination);
+        // Guides no feature reads stay unconnected: the pipeline has one layout whatever the feature set.
+        b.sample("normal", guide.normal, {.optional = true});
+        b.sample("position", guide.position, {.optional = true});
+        b.sample("albedo", guide.albedo, {.optional = true});
+        b.sample("roughness", guide.roughness, {.optional = true});
+        b.sample("meshid", guide.meshId, {.optional = true});
         // Sized by the graph from its output size, so the matrix follows size changes.
         graph::BufferInfo blocksInfo;
         blocksInfo.sizeFromOutput = [s](rhi::Extent2D output) { return bmfrBlockBufferBytes(output, s); };
-        auto blocks = b.write("blocks", b.create(name + ".blocks", blocksInfo));
-        out = b.write("fitted", b.create(name, fullSize(s.format)));
-        auto group = b.bindGroup(pipeline, 0,
-                                 {{.name = "illumination", .texture = illum},
-                                  {.name = "normal", .texture = n},
-                                  {.name = "position", .texture = w},
-                                  {.name = "albedo", .texture = alb},
-                                  {.name = "roughness", .texture = rough},
-                                  {.name = "meshId", .texture = mesh},
-                                  {.name = "fitted", .texture = out},
-                                  {.name = "Blocks", .buffer = blocks}});
-        const graph::TextureHandle fitted = out;
-        return [=](graph::PassContext& pc) {
-            const rhi::Extent2D size = pc.texture(fitted).size();
+        b.write("blocks", b.create(name + ".blocks", blocksInfo));
+        o.fitted = b.write("fitted", b.create(name, fullSize(s.format)));
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) mutable {
+            const rhi::Extent2D size = pc.texture(o.fitted).size();
             const BmfrBlockGrid grid = bmfrBlockGrid(size, s.blockSize, s.offsetBlocks, pc.frameIndex());
-            FitParams p = params;
-            p.offsetX = grid.offsetX;
-            p.offsetY = grid.offsetY;
-            p.blocksX = grid.blocksX;
-            p.frame = uint32_t(pc.frameIndex());
-            pc.dispatch(pipeline, group, {grid.blocksX * grid.blocksY * kThreadsPerBlock, 1}, p);
+            params.set(offsetX, grid.offsetX);
+            params.set(offsetY, grid.offsetY);
+            params.set(blocksX, grid.blocksX);
+            params.set(frame, uint32_t(pc.frameIndex()));
+            pc.dispatch(pipeline, group, {grid.blocksX * grid.blocksY * kThreadsPerBlock, 1}, params);
         };
     });
-    return out;
+    return out.fitted;
 }
 
 } // namespace hush::passes

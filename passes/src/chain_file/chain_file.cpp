@@ -3,33 +3,58 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 
+#include <hush/core/error.hpp>
 #include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/eaw/chain.hpp>
+#include <hush/passes/settings_json.hpp>
 #include <hush/passes/svgf/chain.hpp>
-#include <hush/core/error.hpp>
 
 #include "chain_file/graph_chain.hpp"
-#include "chain_file/settings_json.hpp"
 
 namespace hush::passes {
 
-using chain_file::fail;
-using chain_file::Json;
-using chain_file::ObjectReader;
+using core::Json;
+using core::JsonObject;
 
-std::vector<std::string> builtinChainNames() { return {"svgf", "eaw", "bmfr"}; }
+namespace {
 
-std::unique_ptr<Chain> makeBuiltinChain(std::string_view name) {
-    if (name == "svgf") return std::make_unique<SvgfChain>();
-    if (name == "eaw") return std::make_unique<EawChain>();
-    if (name == "bmfr") return std::make_unique<BmfrChain>();
+// A built-in chain: its name and how it is made from its settings object (absent:
+// the paper's defaults). Settings are read through the settings struct's describe().
+struct BuiltinChain {
+    std::string_view name;
+    std::function<std::unique_ptr<Chain>(JsonObject* settings)> make;
+};
+
+template <class C, class S> BuiltinChain builtin(std::string_view name) {
+    return {name, [](JsonObject* object) -> std::unique_ptr<Chain> {
+                S settings;
+                if (object) readSettings(*object, settings);
+                return std::make_unique<C>(settings);
+            }};
+}
+
+const std::vector<BuiltinChain>& builtinChains() {
+    static const std::vector<BuiltinChain> chains{builtin<SvgfChain, SvgfSettings>("svgf"),
+                                                  builtin<EawChain, EawChainSettings>("eaw"),
+                                                  builtin<BmfrChain, BmfrSettings>("bmfr")};
+    return chains;
+}
+
+const BuiltinChain* findBuiltin(std::string_view name) {
+    for (const auto& c : builtinChains())
+        if (c.name == name) return &c;
     return nullptr;
 }
 
-namespace {
+std::string builtinList() {
+    std::string names;
+    for (const auto& c : builtinChains()) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    return names;
+}
 
 bool validId(const std::string& id) {
     if (id.empty() || id == "input") return false;
@@ -53,83 +78,70 @@ private:
     std::unique_ptr<Chain> inner_;
 };
 
-std::unique_ptr<Chain> presetChain(ObjectReader& root, const std::string& base) {
-    if (base == "svgf") {
-        SvgfSettings settings;
-        chain_file::readSection(root, "settings", settings);
-        return std::make_unique<SvgfChain>(settings);
-    }
-    if (base == "eaw") {
-        EawChainSettings settings;
-        chain_file::readSection(root, "settings", settings);
-        return std::make_unique<EawChain>(settings);
-    }
-    if (base == "bmfr") {
-        BmfrSettings settings;
-        chain_file::readSection(root, "settings", settings);
-        return std::make_unique<BmfrChain>(settings);
-    }
-    fail(root.source(), "base", "unknown chain '" + base + "'; built-in chains: svgf, eaw, bmfr");
+std::unique_ptr<Chain> presetChain(JsonObject& root, const std::string& base) {
+    const BuiltinChain* chain = findBuiltin(base);
+    if (!chain) core::failAt(root.source(), "base", "unknown chain '" + base + "'; built-in chains: " + builtinList());
+    auto settings = root.get("settings");
+    if (!settings) return chain->make(nullptr);
+    JsonObject object(*settings);
+    return chain->make(&object);
 }
 
-chain_file::NodeInstance readNode(const Json& value, const std::string& source, const std::string& path) {
-    ObjectReader r(value, source, path);
+std::string nodeTypeList() {
+    std::string names;
+    for (const auto& t : chain_file::nodeTypes()) names += (names.empty() ? "" : ", ") + std::string(t.type);
+    return names;
+}
+
+chain_file::NodeInstance readNode(const core::JsonValue& value) {
+    JsonObject r(value);
     chain_file::NodeInstance node;
-    node.path = path;
+    node.path = value.path();
     std::string type;
     r.read("id", node.id);
     r.read("node", type);
     if (!validId(node.id))
-        fail(source, r.path("id"), node.id.empty() ? "missing (every node needs an id)"
-                                                   : "'" + node.id + "' is not a valid id (letters, digits, _ and -; "
-                                                                     "not 'input')");
-    if (type.empty()) fail(source, r.path("node"), "missing (the node type)");
+        core::failAt(value.source(), r.path("id"),
+                     node.id.empty() ? "missing (every node needs an id)"
+                                     : "'" + node.id + "' is not a valid id (letters, digits, _ and -; not 'input')");
+    if (type.empty()) core::failAt(value.source(), r.path("node"), "missing (the node type)");
     node.type = chain_file::findNodeType(type);
-    if (!node.type) {
-        std::string names;
-        for (const auto& t : chain_file::nodeTypes()) names += (names.empty() ? "" : ", ") + std::string(t.type);
-        fail(source, r.path("node"), "unknown node type '" + type + "'; node types: " + names);
-    }
+    if (!node.type)
+        core::failAt(value.source(), r.path("node"), "unknown node type '" + type + "'; node types: " + nodeTypeList());
     node.inputs.assign(node.type->inputs.size(), {});
-    if (const Json* inputs = r.child("inputs")) {
-        ObjectReader in(*inputs, source, r.path("inputs"));
+    if (auto inputs = r.get("inputs")) {
+        JsonObject in(*inputs);
         for (size_t p = 0; p < node.type->inputs.size(); ++p) in.read(node.type->inputs[p].name, node.inputs[p]);
         in.finish();
     }
     static const Json empty = Json::object();
-    const Json* settings = r.child("settings");
-    ObjectReader s(settings ? *settings : empty, source, r.path("settings"));
+    const auto settings = r.get("settings");
+    JsonObject s = settings ? JsonObject(*settings) : JsonObject(empty, value.source(), r.path("settings"));
     node.settings = node.type->readSettings(s);
     s.finish();
     r.finish();
     return node;
 }
 
-std::unique_ptr<Chain> customChain(ObjectReader& root, const Json& nodes) {
-    const std::string& source = root.source();
+std::unique_ptr<Chain> customChain(JsonObject& root, const core::JsonValue& nodes) {
     chain_file::ChainDescription d;
-    d.source = source;
-    d.name = std::filesystem::path(source).stem().string();
+    d.source = root.source();
+    d.name = std::filesystem::path(d.source).stem().string();
     root.read("name", d.name);
-    chain_file::readSection(root, "sanitize", d.sanitize);
-    if (!nodes.is_array() || nodes.empty()) fail(source, "nodes", "expected a non-empty array of nodes");
+    if (auto sanitize = root.get("sanitize")) {
+        JsonObject object(*sanitize);
+        readSettings(object, d.sanitize);
+    }
+    if (!nodes.json().is_array() || nodes.json().empty()) nodes.fail("expected a non-empty array of nodes");
     std::set<std::string> ids;
-    for (size_t i = 0; i < nodes.size(); ++i) {
-        auto node = readNode(nodes[i], source, "nodes[" + std::to_string(i) + "]");
-        if (!ids.insert(node.id).second) fail(source, node.path + ".id", "'" + node.id + "' is already used");
+    for (size_t i = 0; i < nodes.arraySize(); ++i) {
+        auto node = readNode(nodes[i]);
+        if (!ids.insert(node.id).second) core::failAt(d.source, node.path + ".id", "'" + node.id + "' is already used");
         d.nodes.push_back(std::move(node));
     }
-    // svgf.temporal feeds back the first level of an svgf.atrous node, defined anywhere.
-    for (const auto& node : d.nodes) {
-        if (node.type->type != "svgf.temporal") continue;
-        const auto& id = std::any_cast<const chain_file::TemporalNodeSettings&>(node.settings).colorHistory;
-        const bool ok = std::any_of(d.nodes.begin(), d.nodes.end(),
-                                    [&](const auto& n) { return n.id == id && n.type->type == "svgf.atrous"; });
-        if (!ok) fail(source, node.path + ".settings.colorHistory", "'" + id + "' is not an svgf.atrous node");
-    }
-    const Json* outputs = root.child("outputs");
-    if (!outputs) fail(source, "", "missing 'outputs' ({\"display\": ..., \"radiance\": ...})");
-    ObjectReader out(*outputs, source, "outputs");
+    const auto outputs = root.get("outputs");
+    if (!outputs) core::failAt(d.source, "", "missing 'outputs' ({\"display\": ..., \"radiance\": ...})");
+    JsonObject out(*outputs);
     out.read("display", d.displayOutput);
     out.read("radiance", d.radianceOutput);
     out.finish();
@@ -138,18 +150,29 @@ std::unique_ptr<Chain> customChain(ObjectReader& root, const Json& nodes) {
 
 } // namespace
 
+std::vector<std::string> builtinChainNames() {
+    std::vector<std::string> names;
+    for (const auto& c : builtinChains()) names.emplace_back(c.name);
+    return names;
+}
+
+std::unique_ptr<Chain> makeBuiltinChain(std::string_view name) {
+    const BuiltinChain* chain = findBuiltin(name);
+    return chain ? chain->make(nullptr) : nullptr;
+}
+
 const Chain& unwrapChain(const Chain& chain) {
     if (const auto* named = dynamic_cast<const NamedChain*>(&chain)) return named->inner();
     return chain;
 }
 
 std::unique_ptr<Chain> parseChainJson(std::string_view text, const std::string& source) {
-    const Json json = chain_file::parse(text, source);
-    ObjectReader root(json, source, "");
+    const Json json = core::parseJson(text, source);
+    JsonObject root(json, source, "");
     std::string base;
     root.read("base", base);
-    const Json* nodes = root.child("nodes");
-    if (!base.empty() && nodes) fail(source, "", "give either 'base' (a built-in chain) or 'nodes', not both");
+    const auto nodes = root.get("nodes");
+    if (!base.empty() && nodes) core::failAt(source, "", "give either 'base' (a built-in chain) or 'nodes', not both");
     std::unique_ptr<Chain> chain;
     if (!base.empty()) {
         std::string name = std::filesystem::path(source).stem().string();
@@ -158,7 +181,7 @@ std::unique_ptr<Chain> parseChainJson(std::string_view text, const std::string& 
     } else if (nodes) {
         chain = customChain(root, *nodes);
     } else {
-        fail(source, "", "expected 'base' (svgf, eaw or bmfr) or 'nodes'");
+        core::failAt(source, "", "expected 'base' (" + builtinList() + ") or 'nodes'");
     }
     root.finish();
     return chain;
@@ -174,12 +197,9 @@ std::unique_ptr<Chain> loadChainFile(const std::string& path) {
 
 std::unique_ptr<Chain> makeChain(const std::string& nameOrPath) {
     if (auto chain = makeBuiltinChain(nameOrPath)) return chain;
-    if (!std::filesystem::exists(nameOrPath)) {
-        std::string names;
-        for (const auto& n : builtinChainNames()) names += (names.empty() ? "" : ", ") + n;
+    if (!std::filesystem::exists(nameOrPath))
         throw Error(ErrorKind::NotFound,
-                    "'" + nameOrPath + "' is neither a built-in chain (" + names + ") nor a chain file");
-    }
+                    "'" + nameOrPath + "' is neither a built-in chain (" + builtinList() + ") nor a chain file");
     return loadChainFile(nameOrPath);
 }
 

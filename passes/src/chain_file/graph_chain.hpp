@@ -2,6 +2,13 @@
 // GraphChain: a chain described node by node in a chain file. Loading checks the
 // whole description (node types, ports, references, outputs); build() then adds
 // the sanitiser and each node in file order.
+//
+// An input may name
+//   "input.<channel>"             a frame channel (sanitized),
+//   "<id>" or "<id>.<port>"       an output of a node defined before it,
+//   "history:<id>[.<port>]"       last frame's value of any node's texture output,
+//                                 defined before or after (feedback: SVGF's colour
+//                                 history is "history:atrous.level0").
 #include <any>
 #include <string>
 #include <vector>
@@ -30,8 +37,8 @@ struct ChainDescription {
     std::string radianceOutput;        // a reference; "" = the display
 };
 
-// Checks every reference ("input.<channel>", "<id>", "<id>.<port>") against the
-// channels and the nodes defined before it, and its kind against the port's.
+// Checks every reference against the channels and the nodes it may see, and its
+// kind against the port's.
 void validate(const ChainDescription& description);
 
 class GraphChain : public Chain {

@@ -5,11 +5,6 @@
 namespace hush::passes {
 
 namespace {
-struct SanitizeParams {
-    uint32_t slot;
-    float lo, hi, replacement;
-};
-
 const char* shaderFor(rhi::Format format) {
     switch (format) {
     case rhi::Format::R32Float: return "common/sanitize_r32f";
@@ -38,37 +33,47 @@ SanitizeRange sanitizeRange(InputChannel channel, const SanitizeSettings& settin
     return {-big, big, 0.0f};
 }
 
+namespace {
+graph::BufferHandle addClearCountsPass(NodeContext& ctx, const std::string& name) {
+    const rhi::ComputePipeline pipeline = ctx.pipelines.get("common/clear_counters");
+    rhi::PushConstants params(pipeline);
+    params.set("count", uint32_t(kInputChannelCount));
+    struct Out {
+        graph::BufferHandle counts;
+    };
+    const auto out = ctx.graph.addPass<Out>(name + ".clear", [&](graph::PassBuilder& b, Out& o) {
+        o.counts = b.write("counts", b.create(name + ".counts", graph::BufferInfo{kInputChannelCount * 4}));
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, {uint32_t(kInputChannelCount), 1}, params); };
+    });
+    return out.counts;
+}
+} // namespace
+
 SanitizedInputs addSanitizePass(NodeContext& ctx, const std::string& name, const DenoiseInputs& inputs,
                                 const SanitizeSettings& settings) {
     SanitizedInputs out;
-    const rhi::ComputePipeline clear = ctx.pipelines.get("common/clear_counters");
-    ctx.graph.addPass(name + ".clear", [&](graph::PassBuilder& b) {
-        auto counts = b.write("counts", b.create(name + ".counts", graph::BufferInfo{kInputChannelCount * 4}));
-        auto group = b.bindGroup(clear, 0, {{.name = "Counters", .buffer = counts}});
-        out.counts = counts;
-        return [=](graph::PassContext& pc) {
-            pc.dispatch(clear, group, {uint32_t(kInputChannelCount), 1}, uint32_t(kInputChannelCount));
-        };
-    });
+    out.counts = addClearCountsPass(ctx, name);
     for (const auto& info : allInputChannels()) {
         if (!inputs.has(info.channel)) continue;
         const std::string stage = name + "." + std::string(info.name);
         const rhi::ComputePipeline pipeline = ctx.pipelines.get(shaderFor(info.format));
         const auto range = sanitizeRange(info.channel, settings);
-        const SanitizeParams params{uint32_t(info.channel), range.lo, range.hi, range.replacement};
-        ctx.graph.addPass(stage, [&](graph::PassBuilder& b) {
-            auto src = b.sample("src", inputs[info.channel], {.format = info.format});
-            auto dst = b.write("dst", b.create(stage, fullSize(info.format)));
-            out.counts = b.readWrite("counts", out.counts);
-            auto group = b.bindGroup(pipeline, 0,
-                                     {{.name = "src", .texture = src},
-                                      {.name = "dst", .texture = dst},
-                                      {.name = "Counters", .buffer = out.counts}});
-            out.inputs[info.channel] = dst;
-            return [=](graph::PassContext& pc) {
-                pc.dispatch(pipeline, group, pc.texture(dst).size(), params);
-            };
+        rhi::PushConstants params(pipeline);
+        params.set("slot", uint32_t(info.channel)).set("lo", range.lo).set("hi", range.hi).set("replacement", range.replacement);
+        struct Stage {
+            graph::TextureHandle sanitized;
+            graph::BufferHandle counts;
+        };
+        const auto stageOut = ctx.graph.addPass<Stage>(stage, [&](graph::PassBuilder& b, Stage& o) {
+            b.sample("src", inputs[info.channel], {.format = info.format});
+            o.sanitized = b.write("dst", b.create(stage, fullSize(info.format)));
+            o.counts = b.readWrite("counts", out.counts);
+            const auto group = b.bindGroup(pipeline);
+            return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.sanitized).size(), params); };
         });
+        out.inputs[info.channel] = stageOut.sanitized;
+        out.counts = stageOut.counts;
     }
     ctx.graph.markOutput(out.counts);
     return out;

@@ -5,28 +5,24 @@ namespace hush::passes {
 Surface addSurfacePass(NodeContext& ctx, const std::string& name, graph::TextureHandle normal,
                        graph::TextureHandle depth, graph::TextureHandle meshId) {
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("common/surface");
-    Surface out;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
-        auto n = b.sample("normal", normal);
-        auto z = b.sample("depth", depth);
-        auto id = b.sample("meshid", meshId);
-        auto nd = b.write("normal_depth", b.create(name + ".normal_depth", fullSize()));
-        auto gm = b.write("gradient_mesh", b.create(name + ".gradient_mesh", fullSize()));
-        auto group = b.bindGroup(pipeline, 0,
-                                 {{.name = "normal", .texture = n},
-                                  {.name = "depth", .texture = z},
-                                  {.name = "meshId", .texture = id},
-                                  {.name = "normalDepth", .texture = nd},
-                                  {.name = "gradientMesh", .texture = gm}});
-        out = {nd, gm};
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(nd).size()); };
+    return ctx.graph.addPass<Surface>(name, [&](graph::PassBuilder& b, Surface& o) {
+        b.sample("normal", normal);
+        b.sample("depth", depth);
+        b.sample("meshid", meshId);
+        o.normalDepth = b.write("normal_depth", b.create(name + ".normal_depth", fullSize()));
+        o.gradientMesh = b.write("gradient_mesh", b.create(name + ".gradient_mesh", fullSize()));
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.normalDepth).size()); };
     });
-    return out;
 }
 
-Surface surfaceHistory(NodeContext& ctx, const std::string& name) {
-    return {ctx.graph.history(name + ".normal_depth", fullSize()),
-            ctx.graph.history(name + ".gradient_mesh", fullSize())};
+Surface surfaceHistory(NodeContext& ctx, const Surface& current) {
+    return {ctx.graph.history(current.normalDepth), ctx.graph.history(current.gradientMesh)};
+}
+
+void sampleSurface(graph::PassBuilder& b, const Surface& surface, std::string_view prefix) {
+    b.sample(std::string(prefix) + "normal_depth", surface.normalDepth);
+    b.sample(std::string(prefix) + "gradient_mesh", surface.gradientMesh);
 }
 
 } // namespace hush::passes

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <hush/passes/settings_push_constants.hpp>
+
 namespace hush::passes {
 
 namespace {
@@ -49,19 +51,18 @@ void tonemap(const TonemapSettings& settings, float rgb[3]) {
 graph::TextureHandle addTonemapPass(NodeContext& ctx, const std::string& name, graph::TextureHandle radiance,
                                     const TonemapSettings& settings) {
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("common/tonemap");
-    graph::TextureHandle result;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
-        auto in = b.sample("radiance", radiance);
-        auto out = b.write("display", b.create(name, fullSize()));
-        auto group = b.bindGroup(pipeline, 0, {{.name = "radiance", .texture = in}, {.name = "display", .texture = out}});
-        result = out;
-        const struct {
-            uint32_t op;
-            float exposure;
-        } params{uint32_t(settings.op), settings.exposure};
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(out).size(), params); };
+    rhi::PushConstants params(pipeline);
+    setFromSettings(params, settings);
+    struct Out {
+        graph::TextureHandle display;
+    };
+    const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
+        b.sample("radiance", radiance);
+        o.display = b.write("display", b.create(name, fullSize()));
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.display).size(), params); };
     });
-    return result;
+    return out.display;
 }
 
 } // namespace hush::passes

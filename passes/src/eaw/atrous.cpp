@@ -5,13 +5,6 @@
 namespace hush::passes {
 
 namespace {
-// Matches the push-constant block of shaders/eaw/atrous.comp.
-struct EawParams {
-    int32_t step;
-    float sigmaRt2, sigmaN2, sigmaX2;
-    uint32_t depthRelative;
-};
-
 // sigma^2, floored so that the shader's division is never 0/0 (see the header).
 float guardedSquare(float sigma) {
     constexpr float kMinSigmaSquared = 1e-30f;
@@ -33,27 +26,26 @@ graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name,
                                       graph::TextureHandle normal, graph::TextureHandle position,
                                       graph::TextureHandle depth, uint32_t level, const EawSettings& s) {
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("eaw/atrous");
-    graph::TextureHandle result;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
-        auto c = b.sample("color", color);
-        auto n = b.sample("normal", normal);
-        auto x = b.sample("position", position);
-        // Without depth the shader never reads its binding: give it the position.
-        auto z = depth.valid() ? b.sample("depth", depth) : x;
-        auto out = b.write("filtered", b.create(name, fullSize()));
-        auto group = b.bindGroup(pipeline, 0,
-                                 {{.name = "color", .texture = c},
-                                  {.name = "normal", .texture = n},
-                                  {.name = "position", .texture = x},
-                                  {.name = "filtered", .texture = out},
-                                  {.name = "depth", .texture = z}});
-        result = out;
-        const EawParams params{int32_t(eawAtrousStep(level)), guardedSquare(eawColorSigma(s, level)),
-                               guardedSquare(s.sigmaN), guardedSquare(depth.valid() ? s.sigmaXRelative : s.sigmaX),
-                               depth.valid() ? 1u : 0u};
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(out).size(), params); };
+    // The weights' squared sigmas are derived per level, so no field maps onto them by name.
+    rhi::PushConstants params(pipeline);
+    params.set("step", int32_t(eawAtrousStep(level)))
+        .set("sigmaRt2", guardedSquare(eawColorSigma(s, level)))
+        .set("sigmaN2", guardedSquare(s.sigmaN))
+        .set("sigmaX2", guardedSquare(depth.valid() ? s.sigmaXRelative : s.sigmaX))
+        .set("depthRelative", depth.valid());
+    struct Out {
+        graph::TextureHandle filtered;
+    };
+    const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
+        b.sample("color", color);
+        b.sample("normal", normal);
+        b.sample("position", position);
+        b.sample("depth", depth, {.optional = true});
+        o.filtered = b.write("filtered", b.create(name, fullSize()));
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.filtered).size(), params); };
     });
-    return result;
+    return out.filtered;
 }
 
 graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name, graph::TextureHandle color,

@@ -3,27 +3,20 @@
 namespace hush::passes {
 
 std::vector<InputChannel> EawChain::inputs() const {
-    std::vector<InputChannel> channels{InputChannel::Color, InputChannel::Albedo, InputChannel::Normal,
-                                       InputChannel::Position, InputChannel::Depth};
-    if (settings_.separateEmission) channels.push_back(InputChannel::Emission);
-    return channels;
+    // Reprojection only for TAA, which is off by default: EAW itself reads no history.
+    const bool reproject = settings_.back.useTaa;
+    return mergeChannels(mergeChannels({InputChannel::Color, InputChannel::Position},
+                                       ChainFrontEnd::inputs(settings_.front, reproject)),
+                         chainBackEndInputs(settings_.back));
 }
 
 ChainOutputs EawChain::build(NodeContext& ctx, const DenoiseInputs& raw) {
-    const auto s = addSanitizePass(ctx, "eaw.sanitize", raw, settings_.sanitize);
-    const auto& in = s.inputs;
-    const graph::TextureHandle emission = settings_.separateEmission ? in[InputChannel::Emission] : graph::TextureHandle{};
-    auto illumination = addDemodulatePass(ctx, "eaw.demodulate", in[InputChannel::Color], in[InputChannel::Albedo],
-                                          settings_.demodulate, emission);
+    const ChainFrontEnd front(ctx, "eaw", raw, settings_.front, /*reproject=*/settings_.back.useTaa);
+    const auto illumination = front.demodulate("demodulate", InputChannel::Color);
     // Depth makes the position weight scale-free (docs/passes/eaw.md).
-    auto filtered = addEawAtrousLevels(ctx, "eaw.atrous", illumination, in[InputChannel::Normal],
-                                       in[InputChannel::Position], in[InputChannel::Depth], settings_.atrous);
-    auto radiance = addRemodulatePass(ctx, "eaw.remodulate", filtered, {}, in[InputChannel::Albedo],
-                                      settings_.demodulate, emission);
-    auto display = addTonemapPass(ctx, "eaw.tonemap", radiance, settings_.tonemap);
-    ctx.graph.markOutput(radiance);
-    ctx.graph.markOutput(display);
-    return {display, radiance, s.counts};
+    const auto filtered = addEawAtrousLevels(ctx, "eaw.atrous", illumination, front[InputChannel::Normal],
+                                             front[InputChannel::Position], front[InputChannel::Depth], settings_.atrous);
+    return addChainBackEnd(ctx, front, front.remodulate(filtered), settings_.back);
 }
 
 } // namespace hush::passes

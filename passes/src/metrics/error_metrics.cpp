@@ -8,33 +8,27 @@
 
 namespace hush::passes {
 
-namespace {
-struct ErrorParams {
-    float epsilon;
-};
-} // namespace
-
 graph::BufferHandle addErrorMetricsPass(NodeContext& ctx, const std::string& name, graph::TextureHandle image,
                                         graph::TextureHandle reference, const MetricsSettings& settings) {
     validateMetricsSettings(settings);
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("metrics/error");
-    const ErrorParams params{settings.relMseEpsilon};
-    graph::BufferHandle out;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
+    rhi::PushConstants params(pipeline);
+    params.set("epsilon", settings.relMseEpsilon);
+    struct Out {
+        graph::BufferHandle partials;
+    };
+    const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
         const graph::InputSpec fullSizeInput{.size = graph::SizeSpec::relative()};
-        auto a = b.sample("image", image, fullSizeInput);
-        auto r = b.sample("reference", reference, fullSizeInput);
-        out = b.write("partials", b.create(name + ".partials", metricsPartialsInfo()));
-        auto group = b.bindGroup(pipeline, 0,
-                                 {{.name = "image", .texture = a},
-                                  {.name = "reference", .texture = r},
-                                  {.name = "Partials", .buffer = out}});
+        b.sample("image", image, fullSizeInput);
+        b.sample("reference", reference, fullSizeInput);
+        o.partials = b.write("partials", b.create(name + ".partials", metricsPartialsInfo()));
+        const auto group = b.bindGroup(pipeline);
         return [=](graph::PassContext& pc) {
             pc.dispatch(pipeline, group, {kMetricsGridThreads, kMetricsGridThreads}, params);
         };
     });
-    ctx.graph.markOutput(out);
-    return out;
+    ctx.graph.markOutput(out.partials);
+    return out.partials;
 }
 
 ErrorMetrics errorMetricsFromPartials(std::span<const float> partials, const MetricsSettings& settings) {

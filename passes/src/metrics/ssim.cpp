@@ -7,42 +7,37 @@
 
 namespace hush::passes {
 
-namespace {
-struct SsimParams {
-    float c1, c2, sigma;
-};
-} // namespace
-
 SsimOutputs addSsimPass(NodeContext& ctx, const std::string& name, graph::TextureHandle image,
                         graph::TextureHandle reference, const MetricsSettings& settings) {
     validateMetricsSettings(settings);
     const rhi::ComputePipeline mapPipeline = ctx.pipelines.get("metrics/ssim_map");
     const rhi::ComputePipeline reducePipeline = ctx.pipelines.get("metrics/reduce_map");
-    const SsimParams params{float(settings.ssimC1()), float(settings.ssimC2()), settings.ssimSigma};
-    SsimOutputs out;
-    ctx.graph.addPass(name + ".map", [&](graph::PassBuilder& b) {
+    rhi::PushConstants params(mapPipeline);
+    params.set("c1", float(settings.ssimC1())).set("c2", float(settings.ssimC2())).set("sigma", settings.ssimSigma);
+    struct Map {
+        graph::TextureHandle map;
+    };
+    const auto map = ctx.graph.addPass<Map>(name + ".map", [&](graph::PassBuilder& b, Map& o) {
         const graph::InputSpec fullSizeInput{.size = graph::SizeSpec::relative()};
-        auto a = b.sample("image", image, fullSizeInput);
-        auto r = b.sample("reference", reference, fullSizeInput);
-        out.map = b.write("map", b.create(name + ".map", fullSize(rhi::Format::RGBA32Float)));
-        auto group = b.bindGroup(mapPipeline, 0,
-                                 {{.name = "image", .texture = a},
-                                  {.name = "reference", .texture = r},
-                                  {.name = "ssimMap", .texture = out.map}});
-        const auto map = out.map;
-        return [=](graph::PassContext& pc) { pc.dispatch(mapPipeline, group, pc.texture(map).size(), params); };
+        b.sample("image", image, fullSizeInput);
+        b.sample("reference", reference, fullSizeInput);
+        o.map = b.write("map", b.create(name + ".map", fullSize(rhi::Format::RGBA32Float)));
+        const auto group = b.bindGroup(mapPipeline);
+        return [=](graph::PassContext& pc) { pc.dispatch(mapPipeline, group, pc.texture(o.map).size(), params); };
     });
-    ctx.graph.addPass(name + ".reduce", [&](graph::PassBuilder& b) {
-        auto map = b.sample("map", out.map);
-        out.partials = b.write("partials", b.create(name + ".partials", metricsPartialsInfo()));
-        auto group = b.bindGroup(reducePipeline, 0,
-                                 {{.name = "map", .texture = map}, {.name = "Partials", .buffer = out.partials}});
+    struct Reduce {
+        graph::BufferHandle partials;
+    };
+    const auto reduced = ctx.graph.addPass<Reduce>(name + ".reduce", [&](graph::PassBuilder& b, Reduce& o) {
+        b.sample("map", map.map);
+        o.partials = b.write("partials", b.create(name + ".partials", metricsPartialsInfo()));
+        const auto group = b.bindGroup(reducePipeline);
         return [=](graph::PassContext& pc) {
             pc.dispatch(reducePipeline, group, {kMetricsGridThreads, kMetricsGridThreads});
         };
     });
-    ctx.graph.markOutput(out.partials);
-    return out;
+    ctx.graph.markOutput(reduced.partials);
+    return {map.map, reduced.partials};
 }
 
 SsimResult ssimFromPartials(std::span<const float> partials) {

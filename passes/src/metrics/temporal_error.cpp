@@ -10,22 +10,19 @@ namespace hush::passes {
 graph::BufferHandle addTemporalErrorPass(NodeContext& ctx, const std::string& name, graph::TextureHandle current,
                                          graph::TextureHandle previous) {
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("metrics/temporal_error");
-    graph::BufferHandle out;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
+    struct Out {
+        graph::BufferHandle partials;
+    };
+    const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
         const graph::InputSpec fullSizeInput{.size = graph::SizeSpec::relative()};
-        auto c = b.sample("current", current, fullSizeInput);
-        auto p = b.sample("previous", previous, fullSizeInput);
-        out = b.write("partials", b.create(name + ".partials", metricsPartialsInfo()));
-        auto group = b.bindGroup(pipeline, 0,
-                                 {{.name = "current", .texture = c},
-                                  {.name = "previous", .texture = p},
-                                  {.name = "Partials", .buffer = out}});
-        return [=](graph::PassContext& pc) {
-            pc.dispatch(pipeline, group, {kMetricsGridThreads, kMetricsGridThreads});
-        };
+        b.sample("current", current, fullSizeInput);
+        b.sample("previous", previous, fullSizeInput);
+        o.partials = b.write("partials", b.create(name + ".partials", metricsPartialsInfo()));
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, {kMetricsGridThreads, kMetricsGridThreads}); };
     });
-    ctx.graph.markOutput(out);
-    return out;
+    ctx.graph.markOutput(out.partials);
+    return out.partials;
 }
 
 TemporalError temporalErrorFromPartials(std::span<const float> partials) {

@@ -1,17 +1,9 @@
 #include <hush/passes/svgf/atrous.hpp>
 
+#include <hush/passes/settings_push_constants.hpp>
 #include <hush/passes/svgf/variance_prefilter.hpp>
 
 namespace hush::passes {
-
-namespace {
-// Matches the push-constant block of shaders/svgf/atrous.comp.
-struct AtrousParams {
-    int32_t step;
-    float sigmaZ, sigmaN, sigmaL;
-    float depthEpsilon, luminanceEpsilon;
-};
-} // namespace
 
 uint32_t svgfAtrousStep(uint32_t level) {
     constexpr uint32_t kMaxLevel = 16;
@@ -22,25 +14,21 @@ graph::TextureHandle addSvgfAtrousPass(NodeContext& ctx, const std::string& name
                                        graph::TextureHandle prefilteredVariance, const Surface& surface,
                                        uint32_t level, const SvgfAtrousSettings& s) {
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("svgf/atrous");
-    graph::TextureHandle result;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
-        auto in = b.sample("illum_variance", illumVariance);
-        auto var = b.sample("prefiltered_variance", prefilteredVariance);
-        auto nd = b.sample("normal_depth", surface.normalDepth);
-        auto gm = b.sample("gradient_mesh", surface.gradientMesh);
-        auto out = b.write("filtered", b.create(name, fullSize()));
-        auto group = b.bindGroup(pipeline, 0,
-                                 {{.name = "illumVariance", .texture = in},
-                                  {.name = "prefilteredVariance", .texture = var},
-                                  {.name = "normalDepth", .texture = nd},
-                                  {.name = "gradientMesh", .texture = gm},
-                                  {.name = "filtered", .texture = out}});
-        result = out;
-        const AtrousParams params{int32_t(svgfAtrousStep(level)), s.sigmaZ, s.sigmaN, s.sigmaL,
-                                  s.depthEpsilon, s.luminanceEpsilon};
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(out).size(), params); };
+    rhi::PushConstants params(pipeline);
+    setFromSettings(params, s);
+    params.set("step", int32_t(svgfAtrousStep(level)));
+    struct Out {
+        graph::TextureHandle filtered;
+    };
+    const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
+        b.sample("illum_variance", illumVariance);
+        b.sample("prefiltered_variance", prefilteredVariance);
+        sampleSurface(b, surface);
+        o.filtered = b.write("filtered", b.create(name, fullSize()));
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.filtered).size(), params); };
     });
-    return result;
+    return out.filtered;
 }
 
 SvgfAtrousResult addSvgfAtrousLevels(NodeContext& ctx, const std::string& name, graph::TextureHandle illumVariance,

@@ -2,46 +2,28 @@
 
 #include <algorithm>
 
-namespace hush::passes {
+#include <hush/passes/settings_push_constants.hpp>
 
-namespace {
-// Push constants of shaders/svgf/variance_estimate.comp (same order).
-struct VarianceParams {
-    float minHistoryLength;
-    int32_t radius;
-    float sigmaZ;
-    float sigmaN;
-    float depthEpsilon;
-    uint32_t shortHistoryBoost;
-};
-} // namespace
+namespace hush::passes {
 
 graph::TextureHandle addSvgfVariancePass(NodeContext& ctx, const std::string& name, const SvgfTemporal& temporal,
                                          const Surface& surface, const SvgfVarianceSettings& settings) {
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("svgf/variance_estimate");
-    graph::TextureHandle result;
-    ctx.graph.addPass(name, [&](graph::PassBuilder& b) {
-        auto color = b.sample("color", temporal.color);
-        auto moments = b.sample("moments", temporal.moments);
-        auto nd = b.sample("normal_depth", surface.normalDepth);
-        auto gm = b.sample("gradient_mesh", surface.gradientMesh);
-        auto out = b.write("variance", b.create(name, fullSize()));
-        auto group = b.bindGroup(pipeline, 0,
-                                 {{.name = "color", .texture = color},
-                                  {.name = "moments", .texture = moments},
-                                  {.name = "normalDepth", .texture = nd},
-                                  {.name = "gradientMesh", .texture = gm},
-                                  {.name = "colorVariance", .texture = out}});
-        result = out;
-        const VarianceParams params{settings.minHistoryLength,
-                                    std::clamp(settings.radius, 0, 16),
-                                    settings.sigmaZ,
-                                    settings.sigmaN,
-                                    settings.depthEpsilon,
-                                    settings.shortHistoryBoost ? 1u : 0u};
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(out).size(), params); };
+    rhi::PushConstants params(pipeline);
+    setFromSettings(params, settings);
+    params.set("radius", std::clamp(settings.radius, 0, 16));
+    struct Out {
+        graph::TextureHandle illumVariance;
+    };
+    const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
+        b.sample("color", temporal.color);
+        b.sample("moments", temporal.moments);
+        sampleSurface(b, surface);
+        o.illumVariance = b.write("illum_variance", b.create(name, fullSize()));
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.illumVariance).size(), params); };
     });
-    return result;
+    return out.illumVariance;
 }
 
 } // namespace hush::passes

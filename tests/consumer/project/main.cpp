@@ -1,13 +1,13 @@
-// An integrator's smallest useful program: open Vulkan through hush, run one
-// embedded compute shader (bench/copy_buffer) as a one-pass render graph over the
-// application's buffers, and check what it wrote.
+// An integrator's smallest useful program: open Vulkan through hush, compose a graph
+// of its own from one of hush's denoising nodes (the tonemap node) over the
+// application's textures, and check what it wrote against hush's CPU formula.
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <vector>
 
-#include <hush/graph/render_graph.hpp>
+#include <hush/passes/common/tonemap.hpp>
 #include <hush/rhi/rhi.hpp>
-#include <hush/shaders/shaders.hpp>
 
 using namespace hush::rhi;
 
@@ -19,40 +19,37 @@ int main() {
         std::printf("hush consumer: adapter %s, validation %s\n", adapter.info().name.c_str(),
                     instance.validationEnabled() ? "on" : "off");
 
-        constexpr uint32_t count = 1000;   // vec4s; not a multiple of the workgroup size
-        std::vector<float> input(count * 4);
-        for (size_t i = 0; i < input.size(); ++i) {
-            input[i] = float(i) * 0.5f - 100.0f;
-        }
-        const uint64_t bytes = input.size() * sizeof(float);
-        const BufferUsage usage = BufferUsage::Storage | BufferUsage::CopySrc | BufferUsage::CopyDst;
-        Buffer src = device.createBuffer({.label = "consumer.src", .size = bytes, .usage = usage});
-        Buffer dst = device.createBuffer({.label = "consumer.dst", .size = bytes, .usage = usage});
+        constexpr uint32_t width = 37, height = 11;   // not a multiple of the workgroup size
+        std::vector<float> radiance(size_t(width) * height * 4);
+        for (size_t i = 0; i < radiance.size(); ++i) radiance[i] = float(i % 97) * 0.05f;
+        Texture in = device.createTexture({.label = "consumer.radiance", .size = {width, height},
+                                           .format = Format::RGBA32Float,
+                                           .usage = TextureUsage::TextureBinding | TextureUsage::CopyDst});
         Queue queue = device.queue();
-        queue.writeBuffer(src, 0, std::as_bytes(std::span(input)));
+        queue.writeTexture({.texture = in, .data = std::as_bytes(std::span(radiance)),
+                            .after = ResourceState::SampledRead});
 
-        ShaderModule module = device.createShaderModule(
-            {.label = "bench/copy_buffer", .code = hush::shaders::find("bench/copy_buffer")});
-        ComputePipeline pipeline = device.createComputePipeline({.label = "copy", .module = module});
         hush::graph::RenderGraph graph(device, {.label = "consumer"});
-        auto in = graph.importBuffer("src", src, {.initialState = ResourceState::General,
-                                                  .finalState = ResourceState::StorageRead});
-        auto out = graph.importBuffer("dst", dst, {.initialState = ResourceState::Undefined,
-                                                   .finalState = ResourceState::CopySrc});
-        graph.addPass("copy", [&](hush::graph::PassBuilder& b) {
-            auto read = b.read("src", in);
-            auto written = b.write("dst", out);
-            auto group = b.bindGroup(pipeline, 0, {{.binding = 0, .buffer = read}, {.binding = 1, .buffer = written}});
-            return [=](hush::graph::PassContext& ctx) { ctx.dispatch(pipeline, group, {count, 1}, count); };
-        });
+        hush::passes::PipelineCache pipelines(device);
+        hush::passes::NodeContext ctx{graph, pipelines};
+        graph.setOutputSize({width, height});
+        const auto source = graph.importTexture("radiance", in);
+        const auto display = hush::passes::addTonemapPass(ctx, "tonemap", source);
+        graph.markOutput(display);
         graph.execute();
         graph.waitIdle();
 
-        std::vector<std::byte> raw = queue.readBuffer(dst);
+        const auto raw = queue.readTexture({.texture = graph.outputTexture(display), .state = graph.outputState(display)});
         std::vector<float> output(raw.size() / sizeof(float));
         std::memcpy(output.data(), raw.data(), output.size() * sizeof(float));
-        if (output != input) {
-            std::fprintf(stderr, "hush consumer: FAIL: the copy differs from its source\n");
+        double worst = 0.0;
+        for (size_t p = 0; p < size_t(width) * height; ++p) {
+            float expected[3] = {radiance[p * 4], radiance[p * 4 + 1], radiance[p * 4 + 2]};
+            hush::passes::tonemap({}, expected);
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(double(output[p * 4 + c]) - expected[c]));
+        }
+        if (!(worst <= 1e-5)) {
+            std::fprintf(stderr, "hush consumer: FAIL: the tonemap node differs from the CPU by %g\n", worst);
             return 1;
         }
         if (instance.validationMessageCount() != 0) {

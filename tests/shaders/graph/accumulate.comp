@@ -9,7 +9,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0, r32ui) uniform readonly uimage2D history;
-layout(set = 0, binding = 1, r32ui) uniform readonly uimage2D inputImage;
+layout(set = 0, binding = 1, r32ui) uniform readonly uimage2D current;
 layout(set = 0, binding = 2, r32ui) uniform writeonly uimage2D acc;
 layout(set = 0, binding = 3, r32ui) uniform writeonly uimage2D seen;
 
@@ -30,5 +30,5 @@ void main() {
         s = h;
     }
     imageStore(seen, p, uvec4(s));
-    imageStore(acc, p, uvec4(h + imageLoad(inputImage, p).x + params.add));
+    imageStore(acc, p, uvec4(h + imageLoad(current, p).x + params.add));
 }

@@ -8,8 +8,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0, r32ui) uniform readonly uimage2D srcA;
-layout(set = 0, binding = 1, r32ui) uniform readonly uimage2D srcB;
+layout(set = 0, binding = 0, r32ui) uniform readonly uimage2D a;
+layout(set = 0, binding = 1, r32ui) uniform readonly uimage2D b;
 layout(set = 0, binding = 2, r32ui) uniform writeonly uimage2D dst;
 
 layout(push_constant) uniform Params {
@@ -24,9 +24,9 @@ void main() {
     if (!hushInside(p, imageSize(dst))) {
         return;
     }
-    uint a = imageLoad(srcA, p).x;
-    uint b = imageLoad(srcB, p).x;
-    uint v = ((a * params.mulA) ^ (b * params.mulB + params.add)) + (a >> params.rotate) + uint(p.x) * 3u +
+    uint va = imageLoad(a, p).x;
+    uint vb = imageLoad(b, p).x;
+    uint v = ((va * params.mulA) ^ (vb * params.mulB + params.add)) + (va >> params.rotate) + uint(p.x) * 3u +
              uint(p.y) * 5u;
     imageStore(dst, p, uvec4(v));
 }

@@ -1,13 +1,19 @@
 #pragma once
 // The compile pipeline, one function per step, each usable and testable alone:
-//   validate -> cull -> order -> lifetimes + aliasing -> barriers
-// RenderGraph::compile runs them in that order; the record step lives in the executor.
+//   validate -> cull -> order -> lifetimes + aliasing -> barriers -> realize
+// RenderGraph::compile runs them in that order (then makes the bind groups and the
+// RHI barrier lists); the record step lives in the executor.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include <hush/graph/graph_model.hpp>
+#include <hush/rhi/buffer.hpp>
+#include <hush/rhi/device.hpp>
+#include <hush/rhi/memory_block.hpp>
 #include <hush/rhi/resource_state.hpp>
+#include <hush/rhi/texture.hpp>
 
 namespace hush::graph {
 
@@ -72,5 +78,39 @@ struct BarrierPlan {
 // `aliased[r]` says whether transient r shares memory with another resource.
 BarrierPlan planBarriers(const GraphModel& model, const std::vector<uint32_t>& passOrder,
                          const std::vector<bool>& aliased);
+
+struct MemoryReport {
+    uint64_t transientAliasedBytes = 0;     // the one memory block all transients share
+    uint64_t transientUnaliasedBytes = 0;   // what they would take, each in its own memory
+    uint64_t historyBytes = 0;              // both halves of every history ping-pong pair
+    uint64_t outputBytes = 0;               // transients marked as outputs (never aliased)
+    uint32_t transientTextures = 0;
+};
+
+// 6. Realize: the physical resources of a planned graph, on `device`. Transient
+//    textures share one memory block where their lifetimes allow (planAliasing); a
+//    history and its source share a ping-pong pair (the two textures swap roles every
+//    frame: index [parity]); imported resources are the application's own.
+struct RealizeOptions {
+    std::string label;                              // names the memory block
+    bool aliasing = true;
+    std::vector<rhi::Texture> importedTextures;     // by resource index (empty when not imported)
+    std::vector<rhi::Buffer> importedBuffers;
+};
+struct RealizedResources {
+    std::vector<rhi::Extent2D> extents;             // by resource (textures)
+    std::vector<bool> aliased;                      // shares memory with another resource
+    std::vector<uint64_t> memoryOffset;             // offset in the transient block, or kNone
+    std::vector<uint32_t> aliasSlot;                // resources with the same slot start at the same offset
+    std::vector<bool> historyPair;                  // part of a ping-pong pair
+    std::vector<rhi::TextureUsage> textureUsage;
+    std::vector<std::array<rhi::Texture, 2>> textures;   // by resource and frame parity
+    std::vector<rhi::Buffer> buffers;
+    rhi::MemoryBlock transientBlock;
+    MemoryReport memory;
+};
+RealizedResources realize(const rhi::Device& device, const GraphModel& model, const CullResult& culled,
+                          const std::vector<uint32_t>& passOrder, const std::vector<Lifetime>& lifetimes,
+                          const RealizeOptions& options);
 
 } // namespace hush::graph

@@ -52,7 +52,7 @@ enum class ResourceKind : uint8_t { Texture, Buffer };
 enum class ResourceOrigin : uint8_t {
     Transient,   // created by a pass; lives within a frame; may share memory
     Imported,    // the application's (inputs, output image)
-    History,     // last frame's final value of the transient with the same name
+    History,     // last frame's final value of the transient it is bound to (historySource)
 };
 
 // How a pass uses a resource. Writes produce the next version.
@@ -73,6 +73,9 @@ struct ResourceDecl {
     rhi::ResourceState initialState = rhi::ResourceState::Undefined;
     rhi::ResourceState finalState = rhi::ResourceState::General;
     bool output = false;         // markOutput: its last version must be computed
+    // History: the transient texture whose end-of-frame value this holds (kNone: not
+    // bound yet; RenderGraph::bindHistory).
+    uint32_t historySource = kNone;
 };
 
 struct AccessDecl {
@@ -97,7 +100,8 @@ struct GraphModel {
     std::vector<PassDecl> passes;
     rhi::Extent2D outputSize{1, 1};
 
-    // The transient whose end-of-frame value a History resource holds, by name.
+    // The transient whose end-of-frame value a History resource holds (kNone when
+    // unbound, or when the resource is not a history).
     uint32_t historySource(uint32_t historyResource) const;
 };
 

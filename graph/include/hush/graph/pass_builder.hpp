@@ -24,15 +24,11 @@ struct InputSpec {
     std::optional<SizeSpec> size;
 };
 
-// One entry of a declared bind group: a graph resource, or a fixed RHI object
-// (a uniform buffer of parameters, a sampler). `name` is the shader variable (for
-// an anonymous block, its type name); or give the binding number instead.
-struct GraphBinding {
+// A resource the graph does not manage, bound to the shader variable called `name`:
+// a buffer of constants, a sampler.
+struct FixedBinding {
     std::string name;
-    uint32_t binding = rhi::kBindingByName;
-    TextureHandle texture;
-    BufferHandle buffer;
-    rhi::Buffer fixedBuffer;
+    rhi::Buffer buffer;
     rhi::Sampler sampler;
 };
 
@@ -57,9 +53,13 @@ public:
     TextureHandle copyFrom(const std::string& port, TextureHandle texture);   // copy source
     TextureHandle copyTo(const std::string& port, TextureHandle texture);     // copy destination (writes)
 
-    // A bind group for `pipeline`'s set `set`. Every resource named here must also
-    // be declared as read or written by this pass.
-    BindGroupHandle bindGroup(const rhi::ComputePipeline& pipeline, uint32_t set, std::vector<GraphBinding> bindings);
+    // A bind group for `pipeline`'s set `set`, bound by name at compile time: each of
+    // the shader's bindings takes this pass's port of the same name (one spelling from
+    // the pass to the shader), or the fixed binding of that name. An optional input
+    // left unconnected binds a 1x1 placeholder, which the shader must not read (say so
+    // in its push constants). A shader binding with no such port, or a port no shader
+    // binding takes, is an error naming both sides.
+    BindGroupHandle bindGroup(const rhi::ComputePipeline& pipeline, uint32_t set = 0, std::vector<FixedBinding> fixed = {});
 
     // Keep this pass even if nothing reads its results (it writes to the outside).
     void sideEffect();

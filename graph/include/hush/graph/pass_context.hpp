@@ -6,6 +6,7 @@
 
 #include <hush/graph/handles.hpp>
 #include <hush/rhi/command.hpp>
+#include <hush/rhi/push_constants.hpp>
 
 namespace hush::graph {
 
@@ -23,13 +24,14 @@ public:
     uint64_t frameIndex() const { return frame_; }
 
     // The common case: one dispatch of `pipeline` with one bind group (at the set it
-    // was declared for) covering threads.width x threads.height invocations, with
-    // optional push constants last: dispatch(pipe, group, {w, h}, params).
+    // was declared for) covering threads.width x threads.height invocations, with its
+    // push constants (written by name, rhi/push_constants.hpp) when it has any.
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads) {
+        dispatch(pipeline, group, threads, nullptr);
+    }
     void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads,
-                  const void* params = nullptr, uint32_t paramBytes = 0);
-    template <class P>
-    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads, const P& params) {
-        dispatch(pipeline, group, threads, &params, uint32_t(sizeof(P)));
+                  const rhi::PushConstants& params) {
+        dispatch(pipeline, group, threads, &params);
     }
 
     PassContext(const CompiledGraph& graph, rhi::CommandEncoder& encoder, uint32_t parity, bool historyValid,
@@ -37,6 +39,9 @@ public:
         : graph_(graph), encoder_(encoder), parity_(parity), historyValid_(historyValid), frame_(frame) {}
 
 private:
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads,
+                  const rhi::PushConstants* params);
+
     const CompiledGraph& graph_;
     rhi::CommandEncoder& encoder_;
     uint32_t parity_;

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <hush/graph/compile_steps.hpp>
@@ -46,13 +47,6 @@ struct GraphTimings {
     bool valid = false;               // false until a frame has completed
 };
 
-struct MemoryReport {
-    uint64_t transientAliasedBytes = 0;     // the one memory block all transients share
-    uint64_t transientUnaliasedBytes = 0;   // what they would take, each in its own memory
-    uint64_t historyBytes = 0;              // both halves of every history ping-pong pair
-    uint64_t outputBytes = 0;               // transients marked as outputs (never aliased)
-    uint32_t transientTextures = 0;
-};
 
 struct CompiledGraph;
 
@@ -65,11 +59,28 @@ public:
 
     // Declaration. setup runs now, declares the pass's ports and returns its execute step.
     PassId addPass(const std::string& name, const SetupFn& setup);
+    // The typed form (Filament's addPass<Data>): setup fills `data` with the handles
+    // the pass produces and returns the execute step; addPass returns `data`, so no
+    // handle escapes through a captured local.
+    //   struct Out { TextureHandle filtered; };
+    //   auto out = graph.addPass<Out>("blur", [&](PassBuilder& b, Out& o) { ...; return execute; });
+    template <class Data, class Setup>
+    Data addPass(const std::string& name, Setup&& setup) {
+        Data data{};
+        addPass(name, [&](PassBuilder& builder) -> ExecuteFn { return setup(builder, data); });
+        return data;
+    }
     TextureHandle importTexture(const std::string& name, const rhi::Texture& texture, const ImportDesc& desc = {});
     BufferHandle importBuffer(const std::string& name, const rhi::Buffer& buffer, const ImportDesc& desc = {});
-    // Last frame's final value of the transient texture called `name` (a pass creates
-    // it this frame). Read-only; holds nothing on the first frame and after resetHistory().
+    // History: last frame's final value of a transient texture. Read-only; holds
+    // nothing on the first frame and after resetHistory() (PassContext::historyValid()).
+    // Of a texture declared already (one history per texture: asking twice gives the same):
+    TextureHandle history(TextureHandle source);
+    // Of one declared later, when a pass reads last frame's value of what a later pass
+    // makes (feedback, e.g. SVGF's colour history from its first a-trous level): declare
+    // it here, then bind it to its source once that exists.
     TextureHandle history(const std::string& name, const TextureInfo& info);
+    void bindHistory(TextureHandle history, TextureHandle source);
     void markOutput(TextureHandle texture);
     void markOutput(BufferHandle buffer);
     void setOutputSize(rhi::Extent2D size);   // what relative sizes are relative to
@@ -91,6 +102,10 @@ public:
 
     // Introspection.
     const GraphModel& model() const { return model_; }
+    // The newest version of the transient or imported texture called `name` (invalid
+    // when there is none), and of the texture a history is bound to.
+    TextureHandle findTexture(std::string_view name) const;
+    TextureHandle historySource(TextureHandle history) const;
     const GraphTimings& timings() const { return timings_; }
     MemoryReport memory() const;
     uint32_t compileCount() const { return compileCount_; }
@@ -112,8 +127,10 @@ private:
     struct FrameSlot;
 
     uint32_t addResource(ResourceDecl decl);
+    void checkTransient(TextureHandle texture, const char* call) const;
     void markDirty() { dirty_ = true; }
     void readFinishedTimings(FrameSlot& slot);
+    void createFrameSlots(const CompiledGraph& compiled);
     const CompiledGraph& compiled() const;
 
     rhi::Device device_;

@@ -15,6 +15,8 @@
 
 namespace hush::rhi {
 
+class PushConstants;
+
 struct TextureBarrier {
     Texture texture;
     ResourceState before = ResourceState::Undefined;
@@ -73,6 +75,11 @@ public:
     void setPipeline(const ComputePipeline& pipeline);
     void setBindGroup(uint32_t index, const BindGroup& group);
     void setPushConstants(const void* data, uint32_t bytes, uint32_t offset = 0);
+    // Values written by name (push_constants.hpp): they must be for the bound pipeline
+    // and complete, else hush::Error names the pipeline and the missing member.
+    void setPushConstants(const PushConstants& values);
+    // The raw bytes of a struct, checked for size only: for hand-written tests and
+    // probes. A node's shader gets PushConstants, checked member by member.
     template <class T> void setParams(const T& params) { setPushConstants(&params, sizeof(T)); }
     void dispatchWorkgroups(uint32_t x, uint32_t y = 1, uint32_t z = 1);
     // Enough workgroups of the bound pipeline's reflected size to cover x*y*z threads.

@@ -31,6 +31,8 @@ public:
     BindGroupLayout getBindGroupLayout(uint32_t set) const;
     uint32_t bindGroupLayoutCount() const;
     uint32_t pushConstantBytes() const;
+    // The shader's push-constant block, member by member (rhi/push_constants.hpp).
+    const std::vector<PushConstantMember>& pushConstantMembers() const;
     std::array<uint32_t, 3> workgroupSize() const;
 };
 

@@ -4,11 +4,25 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <hush/rhi/bind_group.hpp>
 
 namespace hush::rhi {
+
+// A member of the shader's push-constant block, as reflected: what the C++ side must
+// write, by name (rhi/push_constants.hpp checks every write against this).
+enum class ScalarType : uint8_t { Float32, Int32, Uint32 };
+std::string_view toString(ScalarType type);
+struct PushConstantMember {
+    std::string name;
+    uint32_t offset = 0;                      // bytes from the block's start
+    ScalarType type = ScalarType::Float32;
+    uint32_t components = 1;                  // 1 (scalar) to 4 (vec4)
+    uint32_t arraySize = 1;                   // > 1: an array of tightly packed vectors (uvec4 codes[2])
+    friend bool operator==(const PushConstantMember&, const PushConstantMember&) = default;
+};
 
 struct ShaderReflection {
     std::string entryPoint;
@@ -16,6 +30,7 @@ struct ShaderReflection {
     // sets[s] lists the bindings of descriptor set s, sorted by binding.
     std::vector<std::vector<BindGroupLayoutEntry>> sets;
     uint32_t pushConstantBytes = 0;
+    std::vector<PushConstantMember> pushConstants;   // in offset order
 };
 
 // Reflects a compute shader. Throws hush::Error naming `label` on invalid SPIR-V.

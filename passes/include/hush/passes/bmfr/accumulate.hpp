@@ -22,6 +22,7 @@
 // decisions from the preprocessing phase").
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/node_context.hpp>
 
 namespace hush::passes {
@@ -37,6 +38,11 @@ struct BmfrAccumulateSettings {
     rhi::Format format = rhi::Format::RGBA32Float;
 };
 
+template <class V> void describe(V&& v, BmfrAccumulateSettings& s) {
+    v.field("minWeight", s.minWeight, Range{1e-6, 1.0});
+    v.field("format", s.format, kStorageFormatNames);
+}
+
 // Sec. 3.3's setting for the accumulation after the fit.
 inline BmfrAccumulateSettings bmfrPostAccumulateSettings() { return {.minWeight = 0.1f}; }
 
@@ -50,7 +56,7 @@ uint32_t bmfrAccumulateCountCap(const BmfrAccumulateSettings& settings);
 // (graph.history(name)). `input` is read as rgb (any float format); `reprojection`
 // is addReprojectPass's decision. Throws hush::Error (InvalidArgument) on a bad
 // minWeight or format.
-graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle input,
+graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle current,
                                            graph::TextureHandle reprojection,
                                            const BmfrAccumulateSettings& settings = {});
 

@@ -10,33 +10,35 @@
 #include <hush/passes/bmfr/accumulate.hpp>
 #include <hush/passes/bmfr/fit.hpp>
 #include <hush/passes/chain.hpp>
-#include <hush/passes/common/demodulate.hpp>
-#include <hush/passes/common/reproject.hpp>
-#include <hush/passes/common/sanitize.hpp>
-#include <hush/passes/common/taa.hpp>
-#include <hush/passes/common/tonemap.hpp>
+#include <hush/passes/chain_back_end.hpp>
+#include <hush/passes/chain_front_end.hpp>
 
 namespace hush::passes {
 
 struct BmfrSettings {
-    // Take the primary hit's emission out before filtering and add it back after, as
-    // the other chains do (docs/passes/common.md). Needs the emission channel.
-    bool separateEmission = true;
-    SanitizeSettings sanitize;
-    DemodulateSettings demodulate;   // Sec. 3: "we remove first bounce surface albedo"
-    ReprojectSettings reproject;     // the shared decision, made once, used by both accumulations
+    // Sec. 3: "we remove first bounce surface albedo"; the reprojection decision is made
+    // once and used by both accumulations (Sec. 3.3).
+    ChainFrontSettings front;
     BmfrAccumulateSettings accumulate;   // minWeight 0.2 (Sec. 3.1)
     BmfrFitSettings fit;                 // 32 x 32 blocks, 16 offsets, eps 0.01, Eq. 7's 10 features (Sec. 3.2, 5, 6.1)
     BmfrAccumulateSettings postAccumulate = bmfrPostAccumulateSettings();   // minWeight 0.1 (Sec. 3.3)
-    TonemapSettings tonemap;
-    TaaSettings taa;
-    bool useTaa = true;   // Sec. 3.3: "As a last step of the pipeline, TAA (Karis 2014) is used"
     // Store the BMFR temporaries (both accumulations, their histories and the fit
     // output) as rgba16f instead of rgba32f; Sec. 6.1 credits half-precision buffers
     // for part of the paper's speed. Overrides the three stages' `format`. Values are
     // clamped to +-65504 (the largest finite half); the fit's matrix stays fp32.
     bool halfPrecision = false;
+    // Sec. 3.3: "As a last step of the pipeline, TAA (Karis 2014) is used".
+    ChainBackSettings back;
 };
+
+template <class V> void describe(V&& v, BmfrSettings& s) {
+    v.flatten(s.front);
+    v.section("accumulate", s.accumulate);
+    v.section("fit", s.fit);
+    v.section("postAccumulate", s.postAccumulate);
+    v.field("halfPrecision", s.halfPrecision);
+    v.flatten(s.back);
+}
 
 class BmfrChain : public Chain {
 public:

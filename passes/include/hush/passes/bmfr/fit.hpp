@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/node_context.hpp>
 
 namespace hush::passes {
@@ -66,6 +67,25 @@ struct BmfrFitSettings {
     // the QR stay fp32 either way.
     rhi::Format format = rhi::Format::RGBA32Float;
 };
+
+// The names of BmfrFeature's values, in its order.
+inline constexpr EnumNames<BmfrFeature, kBmfrFeatureKinds> kBmfrFeatureNames{{
+    {"one", BmfrFeature::One},
+    {"normalX", BmfrFeature::NormalX},       {"normalY", BmfrFeature::NormalY},       {"normalZ", BmfrFeature::NormalZ},
+    {"positionX", BmfrFeature::PositionX},   {"positionY", BmfrFeature::PositionY},   {"positionZ", BmfrFeature::PositionZ},
+    {"positionX2", BmfrFeature::PositionX2}, {"positionY2", BmfrFeature::PositionY2}, {"positionZ2", BmfrFeature::PositionZ2},
+    {"albedoR", BmfrFeature::AlbedoR},       {"albedoG", BmfrFeature::AlbedoG},       {"albedoB", BmfrFeature::AlbedoB},
+    {"roughness", BmfrFeature::Roughness},   {"meshId", BmfrFeature::MeshId},
+    {"blockU", BmfrFeature::BlockU},         {"blockV", BmfrFeature::BlockV},
+}};
+
+template <class V> void describe(V&& v, BmfrFitSettings& s) {
+    v.field("blockSize", s.blockSize, Choices<3>{16, 32, 64});
+    v.field("epsilon", s.epsilon, Range{0.0, kUnbounded});
+    v.field("features", s.features, kBmfrFeatureNames, kBmfrMaxFeatures);
+    v.field("offsetBlocks", s.offsetBlocks);
+    v.field("format", s.format, kStorageFormatNames);
+}
 
 // A feature whose per-block range (max - min) is at most this fraction of its
 // largest magnitude is constant in the block: its scaled column is 0 (the One

@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/common/surface.hpp>
 #include <hush/passes/node_context.hpp>
 
@@ -52,11 +53,21 @@ struct ReprojectSettings {
     bool fallback3x3 = true;
 };
 
+template <class V> void describe(V&& v, ReprojectSettings& s) {
+    v.field("normalCosine", s.normalCosine, Range{-1.0, 1.0});
+    v.field("depthSlopeTolerance", s.depthSlopeTolerance, Range{0.0, kUnbounded});
+    v.field("depthRelativeTolerance", s.depthRelativeTolerance, Range{0.0, kUnbounded});
+    v.field("fallback3x3", s.fallback3x3);
+}
+
 // Adds pass "<name>"; returns the decision texture (rgba32f, transient "<name>").
 // `motion` is read as xy; `current` and `previous` are this and last frame's
-// Surface (surfaceHistory(ctx, surfaceName), or any textures of the same layout).
+// Surface (any textures of that layout).
 graph::TextureHandle addReprojectPass(NodeContext& ctx, const std::string& name, graph::TextureHandle motion,
                                       const Surface& current, const Surface& previous,
                                       const ReprojectSettings& settings = {});
+// The usual case: `previous` is surfaceHistory(ctx, current).
+graph::TextureHandle addReprojectPass(NodeContext& ctx, const std::string& name, graph::TextureHandle motion,
+                                      const Surface& current, const ReprojectSettings& settings = {});
 
 } // namespace hush::passes

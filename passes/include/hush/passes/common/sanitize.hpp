@@ -5,6 +5,7 @@
 // that held a non-finite value are counted per channel, for diagnostics.
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/denoise_inputs.hpp>
 #include <hush/passes/node_context.hpp>
 
@@ -15,6 +16,8 @@ struct SanitizeSettings {
     // finite in fp32. Far above any real radiance (1e6 fireflies pass unchanged).
     float maxRadiance = 1e8f;
 };
+
+template <class V> void describe(V&& v, SanitizeSettings& s) { v.field("maxRadiance", s.maxRadiance, Range{1.0, 1e30}); }
 
 struct SanitizedInputs {
     DenoiseInputs inputs;         // the sanitised channels: transients "<name>.<channel>"

@@ -4,9 +4,9 @@
 //   gradientMesh rgba32f  (dz/dx, dz/dy in depth units per pixel; mesh id; 0)
 // The depth gradient is the smaller one-sided difference per axis (it feeds SVGF's
 // w_z, Eq. 3, and the reprojection's depth test). The transients are named
-// "<name>.normal_depth" and "<name>.gradient_mesh", so history("<name>.normal_depth")
-// is last frame's surface.
+// "<name>.normal_depth" and "<name>.gradient_mesh"; surfaceHistory() is last frame's.
 #include <string>
+#include <string_view>
 
 #include <hush/passes/node_context.hpp>
 
@@ -20,8 +20,12 @@ struct Surface {
 Surface addSurfacePass(NodeContext& ctx, const std::string& name, graph::TextureHandle normal,
                        graph::TextureHandle depth, graph::TextureHandle meshId);
 
-// Last frame's Surface made by addSurfacePass(ctx, name, ...): graph history handles
-// (invalid contents on the first frame and after resetHistory()).
-Surface surfaceHistory(NodeContext& ctx, const std::string& name);
+// Last frame's value of a Surface made by addSurfacePass: graph history handles
+// (holding nothing on the first frame and after resetHistory()).
+Surface surfaceHistory(NodeContext& ctx, const Surface& current);
+
+// Declares a surface's two textures as sampled ports "<prefix>normal_depth" and
+// "<prefix>gradient_mesh" (the binding names every shader that reads a surface uses).
+void sampleSurface(graph::PassBuilder& b, const Surface& surface, std::string_view prefix = "");
 
 } // namespace hush::passes

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/node_context.hpp>
 
 namespace hush::passes {
@@ -58,10 +59,23 @@ struct TaaSettings {
     TaaHistoryFilter historyFilter = TaaHistoryFilter::CatmullRom;
 };
 
-// Adds pass "<name>". `current`: rgba (rgb used); `motion`: rg, in pixels (any float
+inline constexpr EnumNames<TaaBox, 2> kTaaBoxNames{{{"minmax", TaaBox::MinMax}, {"variance", TaaBox::Variance}}};
+inline constexpr EnumNames<TaaRectify, 2> kTaaRectifyNames{{{"clamp", TaaRectify::Clamp}, {"clip", TaaRectify::Clip}}};
+inline constexpr EnumNames<TaaHistoryFilter, 2> kTaaHistoryFilterNames{
+    {{"bilinear", TaaHistoryFilter::Bilinear}, {"catmull-rom", TaaHistoryFilter::CatmullRom}}};
+
+template <class V> void describe(V&& v, TaaSettings& s) {
+    v.field("alpha", s.alpha, Range{0.0, 1.0});
+    v.field("box", s.box, kTaaBoxNames);
+    v.field("rectify", s.rectify, kTaaRectifyNames);
+    v.field("varianceGamma", s.varianceGamma, Range{0.0, kUnbounded});
+    v.field("historyFilter", s.historyFilter, kTaaHistoryFilterNames);
+}
+
+// Adds pass "<name>". `color`: rgba (rgb used); `motion`: rg, in pixels (any float
 // formats, full output size); `reprojection`: optional, common/reproject's decision
 // for the same motion. Returns the anti-aliased colour, rgba32f transient "<name>";
-// its last-frame value (graph.history("<name>", ...)) is the TAA history.
+// its last-frame value (its graph history) is the TAA history.
 //
 // Give `reprojection` where there is one, above all when the frames are not
 // jittered: their edges are point sampled, so when an edge crosses a pixel centre
@@ -70,7 +84,7 @@ struct TaaSettings {
 // neighbourhood, so rectification keeps it and the output lags behind the edge.
 // On the tracer's cornell sequence that lag, not resampling blur, was most of the
 // error TAA added (docs/passes/display.md).
-graph::TextureHandle addTaaPass(NodeContext& ctx, const std::string& name, graph::TextureHandle current,
+graph::TextureHandle addTaaPass(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
                                 graph::TextureHandle motion, const TaaSettings& settings = {},
                                 graph::TextureHandle reprojection = {});
 

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/node_context.hpp>
 
 namespace hush::passes {
@@ -32,6 +33,16 @@ struct TonemapSettings {
     TonemapOperator op = TonemapOperator::AcesFit;
     float exposure = 1.0f;   // multiplies the radiance before the curve
 };
+
+inline constexpr EnumNames<TonemapOperator, 3> kTonemapOperatorNames{
+    {{"aces", TonemapOperator::AcesFit},
+     {"reinhard-luminance", TonemapOperator::ReinhardLuminance},
+     {"reinhard", TonemapOperator::ReinhardPerChannel}}};
+
+template <class V> void describe(V&& v, TonemapSettings& s) {
+    v.field("op", s.op, kTonemapOperatorNames);
+    v.field("exposure", s.exposure, Range{0.0, kUnbounded});
+}
 
 // Adds pass "<name>"; returns the display values (rgba32f transient "<name>", alpha 1).
 graph::TextureHandle addTonemapPass(NodeContext& ctx, const std::string& name, graph::TextureHandle radiance,

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/node_context.hpp>
 
 namespace hush::passes {
@@ -41,6 +42,14 @@ struct EawSettings {
     // at a 40 degree field of view and 256 pixels) weigh 0.8; a step of z/4 weighs exp(-6).
     float sigmaXRelative = 0.1f;
 };
+
+template <class V> void describe(V&& v, EawSettings& s) {
+    v.field("iterations", s.iterations, Range{0, 16});
+    v.field("sigmaRt", s.sigmaRt, Range{0.0, kUnbounded});
+    v.field("sigmaN", s.sigmaN, Range{0.0, kUnbounded});
+    v.field("sigmaX", s.sigmaX, Range{0.0, kUnbounded});
+    v.field("sigmaXRelative", s.sigmaXRelative, Range{0.0, kUnbounded});
+}
 
 // The a-trous step of `level`: 2^level, capped at 2^16 (every tap but the centre
 // then lies outside any texture the RHI can make).

@@ -2,23 +2,27 @@
 // EawChain: the edge-avoiding a-trous wavelet filter of Dammertz et al. 2010, the
 // baseline both the SVGF and the BMFR papers compare against: 5 a-trous levels with
 // global edge-stopping parameters on colour, normal and world position, no
-// temporal reuse (so no TAA either) and no variance guidance.
-//   sanitize -> demodulate -> 5 x a-trous -> remodulate -> tonemap
+// temporal reuse and no variance guidance. Without TAA by default (the paper has
+// none), so it reads no history at all:
+//   front end (sanitize) -> demodulate -> 5 x a-trous -> remodulate -> tonemap
 #include <hush/passes/chain.hpp>
-#include <hush/passes/common/demodulate.hpp>
-#include <hush/passes/common/sanitize.hpp>
-#include <hush/passes/common/tonemap.hpp>
+#include <hush/passes/chain_back_end.hpp>
+#include <hush/passes/chain_front_end.hpp>
 #include <hush/passes/eaw/atrous.hpp>
 
 namespace hush::passes {
 
 struct EawChainSettings {
-    bool separateEmission = true;   // as SvgfSettings::separateEmission
-    SanitizeSettings sanitize;
-    DemodulateSettings demodulate;
+    ChainFrontSettings front;
     EawSettings atrous;
-    TonemapSettings tonemap;
+    ChainBackSettings back{.useTaa = false};
 };
+
+template <class V> void describe(V&& v, EawChainSettings& s) {
+    v.flatten(s.front);
+    v.section("atrous", s.atrous);
+    v.flatten(s.back);
+}
 
 class EawChain : public Chain {
 public:

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/common/surface.hpp>
 #include <hush/passes/node_context.hpp>
 
@@ -39,6 +40,15 @@ struct SvgfAtrousSettings {
     float luminanceEpsilon = 1e-10f;
 };
 
+template <class V> void describe(V&& v, SvgfAtrousSettings& s) {
+    v.field("iterations", s.iterations, Range{0, 16});
+    v.field("sigmaZ", s.sigmaZ, Range{0.0, kUnbounded});
+    v.field("sigmaN", s.sigmaN, Range{0.0, kUnbounded});
+    v.field("sigmaL", s.sigmaL, Range{0.0, kUnbounded});
+    v.field("depthEpsilon", s.depthEpsilon, Range{0.0, kUnbounded});
+    v.field("luminanceEpsilon", s.luminanceEpsilon, Range{0.0, kUnbounded});
+}
+
 // The a-trous step of `level`: 2^level, capped at 2^16 (a step that large puts
 // every tap but the centre outside any texture the RHI can make).
 uint32_t svgfAtrousStep(uint32_t level);
@@ -58,7 +68,7 @@ struct SvgfAtrousResult {
 
 // Adds, for i in 0..iterations-1, "<name>.prefilter.<i>" and "<name>.level.<i>",
 // level i filtering level i-1's output with step 2^i. Level outputs are transients
-// "<name>.level.<i>", so history("<name>.level.0") is last frame's first level.
+// "<name>.level.<i>"; firstLevel is what SvgfChain binds its colour history to.
 // With iterations = 0 both handles are illumVariance itself.
 SvgfAtrousResult addSvgfAtrousLevels(NodeContext& ctx, const std::string& name, graph::TextureHandle illumVariance,
                                      const Surface& surface, const SvgfAtrousSettings& s = {});

@@ -15,6 +15,7 @@
 // and a history reset (PassContext::historyValid() false) give C' = C, n = 1.
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/node_context.hpp>
 
 namespace hush::passes {
@@ -30,6 +31,12 @@ struct SvgfTemporalSettings {
     float maxHistoryLength = 32.0f;
 };
 
+template <class V> void describe(V&& v, SvgfTemporalSettings& s) {
+    v.field("alpha", s.alpha, Range{0.0, 1.0});
+    v.field("momentsAlpha", s.momentsAlpha, Range{0.0, 1.0});
+    v.field("maxHistoryLength", s.maxHistoryLength, Range{1.0, 65536.0});
+}
+
 struct SvgfTemporal {
     // rgba32f, transient "<name>": integrated illumination in rgb, alpha 1.
     graph::TextureHandle color;
@@ -37,13 +44,13 @@ struct SvgfTemporal {
     graph::TextureHandle moments;
 };
 
-// Adds pass "<name>". `reprojection` is addReprojectPass's decision. The colour
-// history is graph.history(colorHistoryName): in the SVGF chain the first a-trous
+// Adds pass "<name>". `reprojection` is addReprojectPass's decision. `colorHistory`
+// is last frame's colour: in the SVGF chain a history bound to the first a-trous
 // level's output (Sec. 4.3, "we output the filtered color from the first wavelet
-// iteration as our color history"); pass `name` itself to accumulate this pass's own
-// output. The moments history is the history of "<name>.moments".
+// iteration as our color history"; RenderGraph::bindHistory); left invalid, the
+// history of this pass's own output. The moments history is always its own.
 SvgfTemporal addSvgfTemporalPass(NodeContext& ctx, const std::string& name, graph::TextureHandle illumination,
-                                 graph::TextureHandle reprojection, const std::string& colorHistoryName,
+                                 graph::TextureHandle reprojection, graph::TextureHandle colorHistory = {},
                                  const SvgfTemporalSettings& settings = {});
 
 } // namespace hush::passes

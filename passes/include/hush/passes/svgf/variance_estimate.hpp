@@ -17,6 +17,7 @@
 // filtered harder; it fades as n reaches minHistoryLength.
 #include <string>
 
+#include <hush/passes/settings.hpp>
 #include <hush/passes/common/surface.hpp>
 #include <hush/passes/node_context.hpp>
 #include <hush/passes/svgf/temporal_accumulation.hpp>
@@ -38,6 +39,15 @@ struct SvgfVarianceSettings {
     // Multiply the spatial estimate by minHistoryLength / n (see above).
     bool shortHistoryBoost = true;
 };
+
+template <class V> void describe(V&& v, SvgfVarianceSettings& s) {
+    v.field("minHistoryLength", s.minHistoryLength, Range{0.0, 65536.0});
+    v.field("radius", s.radius, Range{0, 16});
+    v.field("sigmaZ", s.sigmaZ, Range{0.0, kUnbounded});
+    v.field("sigmaN", s.sigmaN, Range{0.0, kUnbounded});
+    v.field("depthEpsilon", s.depthEpsilon, Range{0.0, kUnbounded});
+    v.field("shortHistoryBoost", s.shortHistoryBoost);
+}
 
 // Adds pass "<name>"; returns rgba32f (transient "<name>"): rgb illumination, a variance.
 graph::TextureHandle addSvgfVariancePass(NodeContext& ctx, const std::string& name, const SvgfTemporal& temporal,

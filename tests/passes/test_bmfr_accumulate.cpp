@@ -10,8 +10,8 @@
 #include <hush/passes/bmfr/accumulate.hpp>
 #include <hush/core/error.hpp>
 
-#include "reference/bmfr_accumulate_reference.hpp"
-#include "reference/reproject_reference.hpp"
+#include "reference/bmfr_accumulate.hpp"
+#include "reference/common_reproject.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

@@ -6,7 +6,7 @@
 #include <hush/passes/bmfr/fit.hpp>
 
 #include "pass_test_util.hpp"
-#include "reference/bmfr_reference.hpp"
+#include "reference/bmfr_fit.hpp"
 
 namespace hush::passes_test::bmfr {
 

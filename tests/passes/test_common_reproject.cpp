@@ -11,7 +11,8 @@
 #include <hush/passes/common/reproject.hpp>
 #include <hush/passes/common/surface.hpp>
 
-#include "reference/reproject_reference.hpp"
+#include "reference/common_reproject.hpp"
+#include "reference/common_surface.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

@@ -7,7 +7,7 @@
 #include <hush/passes/common/sanitize.hpp>
 #include <hush/passes/frame_inputs.hpp>
 
-#include "reference/common_reference.hpp"
+#include "reference/common_sanitize.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

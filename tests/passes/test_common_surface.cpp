@@ -3,7 +3,7 @@
 
 #include <hush/passes/common/surface.hpp>
 
-#include "reference/common_reference.hpp"
+#include "reference/common_surface.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

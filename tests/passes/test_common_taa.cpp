@@ -11,7 +11,7 @@
 
 #include <hush/passes/common/taa.hpp>
 
-#include "reference/display_reference.hpp"
+#include "reference/common_taa.hpp"
 #include "taa_test_graph.hpp"
 
 using namespace hush;

@@ -11,8 +11,9 @@
 
 #include <hush/passes/common/taa.hpp>
 
-#include "reference/display_reference.hpp"
-#include "reference/reproject_reference.hpp"
+#include "reference/common_reproject.hpp"
+#include "reference/common_surface.hpp"
+#include "reference/common_taa.hpp"
 #include "taa_test_graph.hpp"
 
 using namespace hush;

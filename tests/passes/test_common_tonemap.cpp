@@ -7,7 +7,7 @@
 
 #include <hush/passes/common/tonemap.hpp>
 
-#include "reference/display_reference.hpp"
+#include "reference/common_tonemap.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

@@ -10,7 +10,7 @@
 
 #include <hush/passes/eaw/atrous.hpp>
 
-#include "reference/eaw_reference.hpp"
+#include "reference/eaw_atrous.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

@@ -8,7 +8,9 @@
 
 #include <hush/passes/metrics/metrics_evaluator.hpp>
 
-#include "reference/metrics_reference.hpp"
+#include "reference/metrics_error_metrics.hpp"
+#include "reference/metrics_ssim.hpp"
+#include "reference/metrics_temporal_error.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

@@ -8,7 +8,7 @@
 #include <hush/passes/metrics/partial_sums.hpp>
 #include <hush/passes/metrics/ssim.hpp>
 
-#include "reference/metrics_reference.hpp"
+#include "reference/metrics_ssim.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

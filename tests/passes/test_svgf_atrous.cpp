@@ -11,7 +11,9 @@
 #include <hush/passes/svgf/atrous.hpp>
 #include <hush/passes/svgf/variance_prefilter.hpp>
 
-#include "reference/svgf_atrous_reference.hpp"
+#include "reference/common_surface.hpp"
+#include "reference/svgf_atrous.hpp"
+#include "reference/svgf_variance_prefilter.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

@@ -1,42 +1,11 @@
-#include "reference/metrics_reference.hpp"
+#include "reference/metrics_ssim.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "reference/metrics_error_metrics.hpp"
 
 namespace hush::passes_test::reference {
-
-namespace {
-bool finiteRgb(const FloatImage& image, uint32_t x, uint32_t y) {
-    for (uint32_t c = 0; c < 3; ++c)
-        if (!std::isfinite(image.at(x, y, c))) return false;
-    return true;
-}
-} // namespace
-
-ErrorMetricsResult errorMetrics(const FloatImage& image, const FloatImage& reference, double epsilon, double peak) {
-    ErrorMetricsResult r;
-    double squared = 0, relative = 0;
-    for (uint32_t y = 0; y < image.height; ++y)
-        for (uint32_t x = 0; x < image.width; ++x) {
-            if (!finiteRgb(image, x, y) || !finiteRgb(reference, x, y)) {
-                ++r.nonFinitePixels;
-                continue;
-            }
-            ++r.pixels;
-            for (uint32_t c = 0; c < 3; ++c) {
-                const double a = image.at(x, y, c), b = reference.at(x, y, c);
-                squared += (a - b) * (a - b);
-                relative += (a - b) * (a - b) / (b * b + epsilon);
-            }
-        }
-    const double n = 3.0 * double(r.pixels);
-    r.mse = squared / n;
-    r.rmse = std::sqrt(r.mse);
-    r.relMse = relative / n;
-    r.psnr = r.mse == 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(peak * peak / r.mse);
-    return r;
-}
 
 SsimResult ssim(const FloatImage& image, const FloatImage& reference, double k1, double k2, double dynamicRange,
                 double sigma) {
@@ -94,24 +63,6 @@ SsimResult ssim(const FloatImage& image, const FloatImage& reference, double k1,
             r.map.at(uint32_t(cx), uint32_t(cy), 1) = 1.0f;
         }
     r.ssim = r.windows ? total / double(r.windows) : 0.0;
-    return r;
-}
-
-TemporalErrorResult temporalError(const FloatImage& current, const FloatImage& previous) {
-    const double weights[3] = {0.2126, 0.7152, 0.0722};   // Rec. 709 luminance
-    TemporalErrorResult r;
-    double sum = 0;
-    for (uint32_t y = 0; y < current.height; ++y)
-        for (uint32_t x = 0; x < current.width; ++x) {
-            if (!finiteRgb(current, x, y) || !finiteRgb(previous, x, y)) {
-                ++r.nonFinitePixels;
-                continue;
-            }
-            ++r.pixels;
-            for (uint32_t c = 0; c < 3; ++c)
-                sum += weights[c] * std::fabs(double(current.at(x, y, c)) - double(previous.at(x, y, c)));
-        }
-    r.error = r.pixels ? sum / double(r.pixels) : 0.0;
     return r;
 }
 

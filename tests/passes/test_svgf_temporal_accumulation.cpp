@@ -10,8 +10,9 @@
 #include <hush/passes/common/reproject.hpp>
 #include <hush/passes/svgf/temporal_accumulation.hpp>
 
-#include "reference/reproject_reference.hpp"
-#include "reference/svgf_temporal_reference.hpp"
+#include "reference/common_reproject.hpp"
+#include "reference/common_surface.hpp"
+#include "reference/svgf_temporal_accumulation.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

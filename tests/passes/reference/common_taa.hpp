@@ -1,19 +1,12 @@
 #pragma once
-// CPU references of the display nodes (passes/common/tonemap, passes/common/taa),
-// written from the formulas in their headers (Narkowicz 2016; Reinhard et al. 2002,
-// Eq. 3; Karis 2014; Salvi 2016; Keys 1981) in double precision, independently of the shaders
-// and of the public CPU tonemap functions.
+// CPU reference of passes/common/taa, written from the formulas in its header
+// (Karis 2014; Salvi 2016; Keys 1981) and the decision encoding of reproject.hpp, in
+// double precision, independently of the shader.
 #include <hush/passes/common/taa.hpp>
-#include <hush/passes/common/tonemap.hpp>
 
 #include "pass_test_util.hpp"
 
 namespace hush::passes_test::reference {
-
-// One linear HDR colour through the tonemap settings' operator.
-void tonemapColor(const passes::TonemapSettings& settings, const double in[3], double out[3]);
-// rgb tonemapped, alpha 1 (4 channels).
-FloatImage tonemap(const FloatImage& radiance, const passes::TonemapSettings& settings);
 
 // TAA frame after frame: holds its history (last output) like the graph does.
 class Taa {

@@ -1,4 +1,4 @@
-#include "reference/eaw_reference.hpp"
+#include "reference/eaw_atrous.hpp"
 
 #include <algorithm>
 #include <cmath>

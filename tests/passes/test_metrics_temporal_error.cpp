@@ -8,7 +8,7 @@
 #include <hush/passes/metrics/partial_sums.hpp>
 #include <hush/passes/metrics/temporal_error.hpp>
 
-#include "reference/metrics_reference.hpp"
+#include "reference/metrics_temporal_error.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

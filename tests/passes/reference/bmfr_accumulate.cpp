@@ -1,10 +1,10 @@
-#include "reference/bmfr_accumulate_reference.hpp"
+#include "reference/bmfr_accumulate.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "reference/reproject_reference.hpp"
+#include "reference/common_reproject.hpp"
 
 namespace hush::passes_test::reference {
 

@@ -5,7 +5,7 @@
 
 #include <hush/passes/common/reproject.hpp>
 
-#include "reference/common_reference.hpp"
+#include "reference/common_surface.hpp"
 
 namespace hush::passes_test::reference {
 

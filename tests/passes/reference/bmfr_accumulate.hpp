@@ -4,7 +4,7 @@
 // would fall below minWeight, then exponential; the sample count travels in alpha.
 #include <hush/passes/bmfr/accumulate.hpp>
 
-#include "reference/common_reference.hpp"
+#include "pass_test_util.hpp"
 
 namespace hush::passes_test::reference {
 

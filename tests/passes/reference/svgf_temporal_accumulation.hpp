@@ -1,10 +1,10 @@
 #pragma once
-// CPU references of svgf/temporal_accumulation and svgf/variance_estimate, written
-// from Schied et al. 2017 Sec. 4.1, 4.2, 4.4 and the node headers.
+// CPU reference of svgf/temporal_accumulation, written from Schied et al. 2017
+// Sec. 4.1 and the node header. SvgfTemporalImages is its output, which
+// svgf/variance_estimate's reference reads.
 #include <hush/passes/svgf/temporal_accumulation.hpp>
-#include <hush/passes/svgf/variance_estimate.hpp>
 
-#include "reference/common_reference.hpp"
+#include "pass_test_util.hpp"
 
 namespace hush::passes_test::reference {
 
@@ -18,10 +18,6 @@ struct SvgfTemporalImages {
 SvgfTemporalImages svgfTemporal(const FloatImage& illumination, const FloatImage& decision,
                                 const SvgfTemporalImages& previous, const passes::SvgfTemporalSettings& settings,
                                 bool historyValid);
-
-// rgb illumination, a variance.
-FloatImage svgfVariance(const SvgfTemporalImages& temporal, const SurfaceImages& surface,
-                        const passes::SvgfVarianceSettings& settings);
 
 // Rec. 709 luminance.
 float luminance(float r, float g, float b);

@@ -8,7 +8,7 @@
 #include <hush/passes/metrics/error_metrics.hpp>
 #include <hush/passes/metrics/partial_sums.hpp>
 
-#include "reference/metrics_reference.hpp"
+#include "reference/metrics_error_metrics.hpp"
 #include "support/half.hpp"
 
 using namespace hush;

@@ -1,4 +1,4 @@
-#include "reference/reproject_reference.hpp"
+#include "reference/common_reproject.hpp"
 
 #include <cmath>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "reference/bmfr_reference.hpp"
+#include "reference/bmfr_fit.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include <hush/passes/svgf/variance_prefilter.hpp>
 
-#include "reference/svgf_atrous_reference.hpp"
+#include "reference/svgf_variance_prefilter.hpp"
 
 using namespace hush;
 using namespace hush::passes_test;

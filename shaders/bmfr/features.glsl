@@ -1,7 +1,7 @@
 // BMFR feature buffers (Koskela et al. 2019, Sec. 5, Eq. 7) and the stochastic
 // regularisation noise (Sec. 3.2), shared by the fit kernel. The codes match
 // hush::passes::BmfrFeature; the hash must match the CPU reference's
-// (tests/passes/reference/bmfr_reference.cpp) bit for bit.
+// (tests/passes/reference/bmfr_fit.cpp) bit for bit.
 #ifndef HUSH_BMFR_FEATURES_GLSL
 #define HUSH_BMFR_FEATURES_GLSL
 

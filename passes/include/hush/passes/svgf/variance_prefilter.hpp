@@ -3,7 +3,7 @@
 // Gaussian of the luminance variance, used only inside the luminance edge-stopping
 // function w_l (Eq. 5) of the a-trous level that follows; it is not propagated.
 //
-// Input: rgba32f "illumVariance" (rgb illumination, a luminance variance).
+// Input: rgba32f "illum_variance" (rgb illumination, a luminance variance).
 // Output: r32f transient "<name>": sum g(q) var(q) / sum g(q) over the taps inside
 // the image, g = (1/4, 1/2, 1/4) x (1/4, 1/2, 1/4). Renormalising over the in-image
 // taps keeps a constant variance constant up to the image border (no clamp-to-edge

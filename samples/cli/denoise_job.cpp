@@ -72,6 +72,30 @@ void writeOutputs(const DenoiseJobOptions& o, const std::string& chain, const tr
                  encodeSrgb8(display));
 }
 
+// Each chain writes <out>/<name>/: a name must be a plain folder name (chain files
+// are checked when read; built-in names are), not one the job itself writes, and
+// not another chain's.
+void checkOutputNames(const std::vector<ChainResult>& chains, const std::vector<std::string>& given) {
+    static constexpr std::string_view kReserved[] = {"noisy", "side_by_side", "frames", "graph"};
+    for (size_t i = 1; i < chains.size(); ++i) {
+        const std::string& name = chains[i].name;
+        const std::string& from = given[i - 1];
+        if (!passes::isValidChainName(name))
+            throw Error(ErrorKind::InvalidArgument, "chain '" + from + "' is named '" + name + "', not a valid chain "
+                                                    "name (" + std::string(passes::kChainNameRule) + ")");
+        if (std::find(std::begin(kReserved), std::end(kReserved), name) != std::end(kReserved))
+            throw Error(ErrorKind::InvalidArgument, "chain '" + from + "' is named '" + name + "', which the output "
+                                                    "folder uses for something else; give the chain file another "
+                                                    "\"name\"");
+        for (size_t j = 1; j < i; ++j)
+            if (chains[j].name == name)
+                throw Error(ErrorKind::InvalidArgument,
+                            "two chains are named '" + name + "' ('" + given[j - 1] + "' and '" + from +
+                                "'): each writes <out>/" + name + "/; give one of them a chain file with another "
+                                "\"name\"");
+    }
+}
+
 } // namespace
 
 DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOptions& o) {
@@ -88,6 +112,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
         runs.push_back(std::make_unique<DenoiseRun>(device, passes::makeChain(name), size));
         result.chains.push_back({.name = runs.back()->chain().name()});
     }
+    checkOutputNames(result.chains, o.chains);
     for (auto& c : result.chains) std::filesystem::create_directories(std::filesystem::path(o.outFolder) / c.name);
     if (o.sideBySide) std::filesystem::create_directories(std::filesystem::path(o.outFolder) / "side_by_side");
     if (!o.dumpGraph.empty())

@@ -154,3 +154,16 @@ TEST_CASE("chain file errors name the file, the field and the problem", "[chain]
     REQUIRE(missing);
     CHECK_THAT(missing->what(), Contains("'no/such/chain.json' is neither a built-in chain"));
 }
+
+TEST_CASE("a chain's name is a plain folder name: no separators, no leading dot", "[chain][chain-file]") {
+    using Catch::Contains;
+    for (const char* good : {"svgf", "my-chain_2", "eaw.fewer", "A1"}) CHECK(passes::isValidChainName(good));
+    for (const char* bad : {"", "..", ".hidden", "../x", "/abs", "a/b", "a\\b", "sp ace", "t\ab"})
+        CHECK_FALSE(passes::isValidChainName(bad));
+    CHECK_FALSE(passes::isValidChainName(std::string(65, 'a')));
+    CHECK_THAT(errorOf(R"({"name": "../x", "base": "svgf"})"),
+               Contains("chain.json: name: '../x' is not a valid chain name"));
+    CHECK_THAT(errorOf(R"({"name": "/tmp/x", "nodes": [{"id": "t", "node": "tonemap", "inputs": {"radiance": "input.color"}}],
+                          "outputs": {"display": "t"}})"),
+               Contains("name: '/tmp/x' is not a valid chain name"));
+}

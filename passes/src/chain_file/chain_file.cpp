@@ -93,6 +93,18 @@ std::string nodeTypeList() {
     return names;
 }
 
+// "name", else the file's stem; it becomes a folder name, so it is checked here.
+std::string chainName(JsonObject& root) {
+    std::string name = std::filesystem::path(root.source()).stem().string();
+    const bool given = root.has("name");
+    root.read("name", name);
+    if (!isValidChainName(name))
+        core::failAt(root.source(), "name",
+                     "'" + name + "' is not a valid chain name (" + std::string(kChainNameRule) + ")" +
+                         (given ? "" : "; it comes from the file name: give \"name\" in the file"));
+    return name;
+}
+
 chain_file::NodeInstance readNode(const core::JsonValue& value) {
     JsonObject r(value);
     chain_file::NodeInstance node;
@@ -126,8 +138,7 @@ chain_file::NodeInstance readNode(const core::JsonValue& value) {
 std::unique_ptr<Chain> customChain(JsonObject& root, const core::JsonValue& nodes) {
     chain_file::ChainDescription d;
     d.source = root.source();
-    d.name = std::filesystem::path(d.source).stem().string();
-    root.read("name", d.name);
+    d.name = chainName(root);
     if (auto sanitize = root.get("sanitize")) {
         JsonObject object(*sanitize);
         readSettings(object, d.sanitize);
@@ -149,6 +160,14 @@ std::unique_ptr<Chain> customChain(JsonObject& root, const core::JsonValue& node
 }
 
 } // namespace
+
+bool isValidChainName(std::string_view name) {
+    if (name.empty() || name.size() > 64 || name.front() == '.') return false;
+    return std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+               c == '.';
+    });
+}
 
 std::vector<std::string> builtinChainNames() {
     std::vector<std::string> names;
@@ -175,9 +194,7 @@ std::unique_ptr<Chain> parseChainJson(std::string_view text, const std::string& 
     if (!base.empty() && nodes) core::failAt(source, "", "give either 'base' (a built-in chain) or 'nodes', not both");
     std::unique_ptr<Chain> chain;
     if (!base.empty()) {
-        std::string name = std::filesystem::path(source).stem().string();
-        root.read("name", name);
-        chain = std::make_unique<NamedChain>(name, presetChain(root, base));
+        chain = std::make_unique<NamedChain>(chainName(root), presetChain(root, base));
     } else if (nodes) {
         chain = customChain(root, *nodes);
     } else {

@@ -33,6 +33,13 @@ std::unique_ptr<Chain> loadChainFile(const std::string& path);
 // A built-in name, else a file path.
 std::unique_ptr<Chain> makeChain(const std::string& nameOrPath);
 
+// A chain's name names its output folder and its entries in reports, so it is
+// restricted to 1 to 64 letters, digits, '-', '_' and '.', not starting with '.':
+// no path separator, no "..", nothing outside the output folder.
+bool isValidChainName(std::string_view name);
+inline constexpr std::string_view kChainNameRule =
+    "1 to 64 letters, digits, '-', '_' and '.', not starting with '.'";
+
 // The node types a chain file may use, with their ports, for `hush denoise --help`.
 std::string describeChainNodes();
 

@@ -1,12 +1,24 @@
 #include <hush/passes/chain_runner.hpp>
 
+#include <algorithm>
 #include <cstring>
+
+#include <hush/passes/chain_front_end.hpp>
 
 #include <hush/core/error.hpp>
 
 namespace hush::passes {
 
 namespace {
+// The chain's inputs, and those of its optional inputs the frames carry.
+std::vector<InputChannel> channelsToRead(const Chain& chain, const std::vector<InputChannel>& available) {
+    std::vector<InputChannel> optional;
+    for (auto c : chain.optionalInputs())
+        if (available.empty() || std::find(available.begin(), available.end(), c) != available.end())
+            optional.push_back(c);
+    return mergeChannels(chain.inputs(), optional);
+}
+
 graph::RenderGraphDesc labelled(graph::RenderGraphDesc desc, const Chain& chain) {
     if (desc.label == graph::RenderGraphDesc{}.label) desc.label = chain.name();
     return desc;
@@ -14,12 +26,12 @@ graph::RenderGraphDesc labelled(graph::RenderGraphDesc desc, const Chain& chain)
 } // namespace
 
 ChainRunner::ChainRunner(rhi::Device device, std::unique_ptr<Chain> chain, rhi::Extent2D size,
-                         const graph::RenderGraphDesc& desc)
+                         const graph::RenderGraphDesc& desc, const std::vector<InputChannel>& available)
     : device_(device),
       chain_(std::move(chain)),
       pipelines_(device),
       graph_(device, labelled(desc, *chain_)),
-      inputs_(device, size, chain_->inputs()) {
+      inputs_(device, size, channelsToRead(*chain_, available)) {
     graph_.setOutputSize(size);
     NodeContext ctx{graph_, pipelines_};
     outputs_ = chain_->build(ctx, inputs_.import(graph_));

@@ -17,6 +17,9 @@ constexpr InputChannelInfo kChannels[kInputChannelCount] = {
     {InputChannel::Roughness, "roughness", Format::R32Float, 1},
     {InputChannel::MeshId, "meshid", Format::R32Float, 1},
     {InputChannel::Emission, "emission", Format::RGBA32Float, 3},
+    {InputChannel::Matte, "matte", Format::RGBA32Float, 3},
+    {InputChannel::Glossy, "glossy", Format::RGBA32Float, 3},
+    {InputChannel::VirtualPos, "virtualpos", Format::RGBA32Float, 3},
 };
 } // namespace
 

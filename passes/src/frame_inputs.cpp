@@ -57,8 +57,14 @@ void FrameInputs::upload(InputChannel channel, std::span<const float> pixels, ui
     uploaded = true;
 }
 
+void FrameInputs::setCamera(const FrameCamera& camera) {
+    validate(camera);
+    *camera_ = camera;
+}
+
 DenoiseInputs FrameInputs::import(graph::RenderGraph& graph) const {
     DenoiseInputs inputs;
+    inputs.camera = camera_;
     for (auto c : channels_)
         inputs[c] = graph.importTexture("input." + std::string(inputChannelInfo(c).name), textures_[size_t(c)]);
     return inputs;

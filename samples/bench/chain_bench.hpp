@@ -100,8 +100,6 @@ struct QualityRow {
 // The channels every chain may read: color, direct, indirect, emission, albedo,
 // normal, position, depth, motion, meshid.
 std::vector<tracer::Channel> denoiserChannels();
-// Uploads every channel `runner`'s chain reads; hush::Error names a missing one.
-void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame);
 // Frame 0 of the cornell box's camera path at 1 spp, with denoiserChannels().
 tracer::Frame renderTimingFrame(Extent2D size);
 Roofline measureRoofline(const rhi::Device& device, Extent2D size, uint32_t runs);

@@ -15,6 +15,7 @@
 #include <hush/tracer/renderer.hpp>
 
 #include "chain_bench.hpp"
+#include "frame_upload.hpp"
 
 namespace hush::bench::chain_bench {
 namespace {
@@ -63,7 +64,7 @@ std::vector<Image> runChain(const rhi::Device& device, const std::string& name,
     passes::ChainRunner runner(device, passes::makeChain(name), {frames[0].width, frames[0].height});
     std::vector<Image> displays;
     for (const auto& frame : frames) {
-        uploadFrame(runner, frame);
+        frames::uploadFrame(runner, frame);
         runner.run();
         displays.push_back(runner.readDisplay());
     }

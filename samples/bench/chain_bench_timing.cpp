@@ -16,6 +16,7 @@
 
 #include "bandwidth_probe.hpp"
 #include "chain_bench.hpp"
+#include "frame_upload.hpp"
 
 namespace hush::bench::chain_bench {
 namespace {
@@ -70,19 +71,6 @@ std::vector<tracer::Channel> denoiserChannels() {
             Channel::Normal,   Channel::Position, Channel::Depth, Channel::Motion,   Channel::MeshId};
 }
 
-void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame) {
-    auto& inputs = runner.inputs();
-    for (const auto channel : inputs.channels()) {
-        const auto name = passes::inputChannelInfo(channel).name;
-        const auto layer = tracer::parseChannel(name);
-        if (!layer || !frame.has(*layer))
-            throw Error(ErrorKind::NotFound, "frame " + std::to_string(frame.index) + " has no '" + std::string(name) +
-                                                 "' layer, which chain '" + runner.chain().name() + "' reads");
-        const auto& image = frame.get(*layer);
-        inputs.upload(channel, image.pixels, image.channels);
-    }
-}
-
 tracer::Frame renderTimingFrame(Extent2D size) {
     const tracer::Renderer renderer(tracer::makeBuiltinScene("cornell"));
     tracer::RenderSettings settings;
@@ -120,7 +108,7 @@ TimingResult measureChainTiming(const rhi::Device& device, const std::string& ch
     result.deviceBytesAliased = device.allocatedBytes() - before;
     result.aliased = runner.graph().memory();
     result.barriersPerFrame = runner.graph().barrierCount();
-    uploadFrame(runner, frame);
+    frames::uploadFrame(runner, frame);
 
     // The same input every frame: the work of each pass does not depend on the
     // pixel values, and the histories are valid from the second frame on.

@@ -11,6 +11,7 @@
 #include <hush/tracer/frame_io.hpp>
 
 #include "denoise_run.hpp"
+#include "frame_upload.hpp"
 #include "png_file.hpp"
 #include "progress.hpp"
 
@@ -109,7 +110,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
     result.chains.push_back({.name = "noisy"});
     std::vector<std::unique_ptr<DenoiseRun>> runs;
     for (const auto& name : o.chains) {
-        runs.push_back(std::make_unique<DenoiseRun>(device, passes::makeChain(name), size));
+        runs.push_back(std::make_unique<DenoiseRun>(device, passes::makeChain(name), size, frames::channelsOf(info.layers)));
         result.chains.push_back({.name = runs.back()->chain().name()});
     }
     checkOutputNames(result.chains, o.chains);

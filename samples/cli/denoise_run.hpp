@@ -21,7 +21,10 @@ struct DenoisedFrame {
 
 class DenoiseRun {
 public:
-    DenoiseRun(rhi::Device device, std::unique_ptr<passes::Chain> chain, rhi::Extent2D size);
+    // `available`: the channels the frames carry (a chain's optional inputs outside it
+    // are not read).
+    DenoiseRun(rhi::Device device, std::unique_ptr<passes::Chain> chain, rhi::Extent2D size,
+               const std::vector<passes::InputChannel>& available);
 
     // Throws hush::Error naming the frame and channel when a frame lacks a channel
     // the chain reads, or has another size. A frame without 'emission' has none.
@@ -39,10 +42,7 @@ private:
     std::vector<std::string> passNames_;
     std::map<std::string, std::vector<double>> passMs_;
     std::vector<double> frameMs_;
-    std::vector<float> zeros_;
 };
 
-// The frame's channel named like `channel` (the layer names are the same).
-tracer::Channel tracerChannel(passes::InputChannel channel);
 
 } // namespace hush::cli

@@ -1,5 +1,7 @@
 #include "chain_test_util.hpp"
 
+#include "frame_upload.hpp"
+
 #include <cmath>
 
 #include <hush/passes/common/tonemap.hpp>
@@ -40,19 +42,7 @@ const std::vector<tracer::Frame>& cornellSequence128() {
 }
 
 void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame, const ChannelEdit& edit) {
-    auto& inputs = runner.inputs();
-    for (auto c : inputs.channels()) {
-        const auto channel = tracer::parseChannel(passes::inputChannelInfo(c).name);
-        REQUIRE(channel);
-        const auto& image = frame.get(*channel);
-        if (!edit) {
-            inputs.upload(c, image.pixels, image.channels);
-            continue;
-        }
-        std::vector<float> pixels = image.pixels;
-        edit(c, pixels, image.channels);
-        inputs.upload(c, pixels, image.channels);
-    }
+    frames::uploadFrame(runner, frame, edit);
 }
 
 std::vector<std::vector<float>> runSequence(std::unique_ptr<passes::Chain> chain,

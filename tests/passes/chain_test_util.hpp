@@ -9,6 +9,8 @@
 #include <hush/passes/chain_runner.hpp>
 #include <hush/tracer/frame.hpp>
 
+#include "frame_upload.hpp"
+
 namespace hush::passes_test {
 
 // The built-in cornell scene's camera path, 96x96, 16 frames, 1 bounce; every frame
@@ -19,7 +21,7 @@ const std::vector<tracer::Frame>& cornellSequence();
 const std::vector<tracer::Frame>& cornellSequence128();
 
 // Called with each channel's pixels before upload, to inject faults.
-using ChannelEdit = std::function<void(passes::InputChannel, std::vector<float>& pixels, uint32_t components)>;
+using ChannelEdit = frames::ChannelEdit;
 void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame, const ChannelEdit& edit = {});
 
 // Runs `chain` over `frames`, returning each frame's display image (RGBA).

@@ -64,6 +64,7 @@ TEST_CASE("frame round trip: float channels are bit-exact, half within fp16, mes
         for (int c = 0; c < 3; ++c) {
             INFO("size " << width << "x" << height << ", compression " << c);
             Frame frame = test::makeFullFrame(width, height);
+            frame.metresPerUnit = 0.001f;
             for (Channel channel : kAllChannels)
                 if (channelInfo(channel).storedAs == PixelKind::Float) putFloatSpecials(frame.channels[channel]);
             const std::string path = dir.file("frame.exr");
@@ -75,6 +76,7 @@ TEST_CASE("frame round trip: float channels are bit-exact, half within fp16, mes
             CHECK(back.index == 42);
             CHECK(back.scene == frame.scene);
             CHECK(back.referenceSpp == 1024);
+            CHECK(back.metresPerUnit == 0.001f);
             CHECK(sameCamera(back.camera, frame.camera));
             CHECK(sameCamera(back.previousCamera, frame.previousCamera));
             REQUIRE(back.channels.size() == std::size(kAllChannels));

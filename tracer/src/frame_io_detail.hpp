@@ -17,6 +17,7 @@ inline constexpr const char* kAttrFormatVersion = "hush.formatVersion";
 inline constexpr const char* kAttrFrameIndex = "hush.frameIndex";
 inline constexpr const char* kAttrScene = "hush.scene";
 inline constexpr const char* kAttrReferenceSpp = "hush.referenceSpp";
+inline constexpr const char* kAttrMetresPerUnit = "hush.metresPerUnit";
 inline constexpr const char* kCameraPrefix = "hush.camera.";
 inline constexpr const char* kPreviousCameraPrefix = "hush.previousCamera.";
 // Suffixes after either camera prefix.

@@ -1,6 +1,7 @@
 // readFrame / readFrameInfo: an OpenEXR file (hush's own or another renderer's, per
 // docs/frame-format.md) -> Frame. Layers are found by name; anything else is ignored.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -91,6 +92,12 @@ void readAttributes(const Imf::Header& header, const Reader& reader, Frame& fram
     frame.index = readCount(header, detail::kAttrFrameIndex, reader, fromName >= 0 ? uint32_t(fromName) : 0);
     frame.referenceSpp = readCount(header, detail::kAttrReferenceSpp, reader, 0);
     if (const auto* a = find<Imf::StringAttribute>(header, detail::kAttrScene, reader)) frame.scene = a->value();
+    if (const auto* a = find<Imf::FloatAttribute>(header, detail::kAttrMetresPerUnit, reader)) {
+        if (!(std::isfinite(a->value()) && a->value() > 0.0f))
+            reader.fail(ErrorKind::InvalidArgument, std::string(detail::kAttrMetresPerUnit) +
+                                                        " must be finite and positive, got " + std::to_string(a->value()));
+        frame.metresPerUnit = a->value();
+    }
     readCamera(header, detail::kCameraPrefix, reader, frame.camera);
     // A missing previous camera (or part of one) is taken to be the current one: no motion.
     frame.previousCamera = frame.camera;

@@ -47,6 +47,9 @@ void validateFrame(const Frame& frame, const std::string& path) {
     if (frame.index > uint32_t(std::numeric_limits<int>::max()) ||
         frame.referenceSpp > uint32_t(std::numeric_limits<int>::max()))
         throw Error(ErrorKind::InvalidArgument, prefix + "index or referenceSpp exceeds 2^31-1");
+    if (!(std::isfinite(frame.metresPerUnit) && frame.metresPerUnit > 0.0f))
+        throw Error(ErrorKind::InvalidArgument, prefix + "metresPerUnit must be finite and positive, got " +
+                                                    std::to_string(frame.metresPerUnit));
     for (const auto& [channel, image] : frame.channels) {
         const uint32_t components = channelInfo(channel).components;
         if (image.width != frame.width || image.height != frame.height || image.channels != components ||
@@ -148,6 +151,7 @@ void writeExr(const Frame& frame, const std::string& tempPath, const WriteOption
     header.insert(detail::kAttrFrameIndex, Imf::IntAttribute(int(frame.index)));
     header.insert(detail::kAttrScene, Imf::StringAttribute(frame.scene));
     header.insert(detail::kAttrReferenceSpp, Imf::IntAttribute(int(frame.referenceSpp)));
+    header.insert(detail::kAttrMetresPerUnit, Imf::FloatAttribute(frame.metresPerUnit));
     addCamera(header, detail::kCameraPrefix, frame.camera);
     addCamera(header, detail::kPreviousCameraPrefix, frame.previousCamera);
 

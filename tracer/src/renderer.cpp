@@ -84,6 +84,7 @@ Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, cons
     frame.height = settings.height;
     frame.index = frameIndex;
     frame.scene = scene.name;
+    frame.metresPerUnit = scene.sceneScale;
     frame.camera = camera.info;
     frame.previousCamera = previous.info;
     for (Channel c : settings.channels) frame.add(c);

@@ -20,7 +20,9 @@ SanitizeRange sanitizeRange(InputChannel channel, const SanitizeSettings& settin
     case InputChannel::Color:
     case InputChannel::Direct:
     case InputChannel::Indirect:
-    case InputChannel::Emission: return {0.0f, settings.maxRadiance, 0.0f};
+    case InputChannel::Emission:
+    case InputChannel::Matte:
+    case InputChannel::Glossy: return {0.0f, settings.maxRadiance, 0.0f};
     case InputChannel::Albedo:
     case InputChannel::Specular: return {0.0f, 1.0f, 0.0f};
     case InputChannel::Normal: return {-1.0f, 1.0f, 0.0f};
@@ -28,6 +30,7 @@ SanitizeRange sanitizeRange(InputChannel channel, const SanitizeSettings& settin
     case InputChannel::Roughness: return {0.0f, big, 0.0f};
     case InputChannel::MeshId: return {-1.0f, big, -1.0f};
     case InputChannel::Position:
+    case InputChannel::VirtualPos:
     case InputChannel::Motion: return {-big, big, 0.0f};
     }
     return {-big, big, 0.0f};

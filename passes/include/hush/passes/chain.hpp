@@ -25,6 +25,9 @@ public:
     virtual ~Chain() = default;
     virtual std::string name() const = 0;                     // "svgf"
     virtual std::vector<InputChannel> inputs() const = 0;     // the channels build() reads
+    // Channels build() reads when the frames have them and does without otherwise
+    // (Mara's glossy term: without it, the glossy branch is culled).
+    virtual std::vector<InputChannel> optionalInputs() const { return {}; }
     // Adds the chain's passes to ctx.graph and marks display, radiance and
     // sanitizeCounts as outputs. `inputs` holds at least the channels of inputs().
     virtual ChainOutputs build(NodeContext& ctx, const DenoiseInputs& inputs) = 0;

@@ -13,8 +13,10 @@ namespace hush::passes {
 
 class ChainRunner {
 public:
+    // `available`: the channels the frames carry (empty: all); the chain's optional
+    // inputs outside it are not read, and the graph culls what only they fed.
     ChainRunner(rhi::Device device, std::unique_ptr<Chain> chain, rhi::Extent2D size,
-                const graph::RenderGraphDesc& desc = {});
+                const graph::RenderGraphDesc& desc = {}, const std::vector<InputChannel>& available = {});
 
     // Upload every channel of chain().inputs() here before each run().
     FrameInputs& inputs() { return inputs_; }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <hush/graph/handles.hpp>
+#include <hush/passes/frame_camera.hpp>
 #include <hush/rhi/format.hpp>
 
 namespace hush::passes {
@@ -26,8 +27,11 @@ enum class InputChannel : uint8_t {
     Roughness,  // GGX alpha
     MeshId,     // float; -1 where no surface
     Emission,   // radiance the primary hit emits (part of direct / color), noise-free
+    Matte,      // Mara et al.'s matte indirect term, F and m factored out (seed 000 Eq. 9)
+    Glossy,     // Mara et al.'s glossy indirect term, F factored out (Eq. 10)
+    VirtualPos, // world-space reflected virtual position (Mara et al. Sec. 3.4)
 };
-inline constexpr size_t kInputChannelCount = 12;
+inline constexpr size_t kInputChannelCount = 15;
 
 struct InputChannelInfo {
     InputChannel channel;
@@ -40,8 +44,10 @@ std::span<const InputChannelInfo> allInputChannels();
 std::optional<InputChannel> parseInputChannel(std::string_view name);
 
 // Graph handles of a frame's inputs; a channel a chain does not need may be invalid.
+// `camera` is the frame's camera (null when the frames come without one).
 struct DenoiseInputs {
     std::array<graph::TextureHandle, kInputChannelCount> channels{};
+    FrameCameraRef camera;
     graph::TextureHandle& operator[](InputChannel c) { return channels[size_t(c)]; }
     graph::TextureHandle operator[](InputChannel c) const { return channels[size_t(c)]; }
     bool has(InputChannel c) const { return channels[size_t(c)].valid(); }

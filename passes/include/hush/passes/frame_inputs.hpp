@@ -21,7 +21,10 @@ public:
     // components are filled (0, alpha 1); extra ones are dropped. Throws hush::Error
     // naming the channel when it is not one of this object's or the size is wrong.
     void upload(InputChannel channel, std::span<const float> pixels, uint32_t components);
-    // Imports every channel as "input.<name>" (read-only, sampled) into `graph`.
+    // The frame's camera, read by the chains that need one (FrameCamera); validated.
+    void setCamera(const FrameCamera& camera);
+    // Imports every channel as "input.<name>" (read-only, sampled) into `graph`, and
+    // hands out the camera (its values change with every setCamera).
     DenoiseInputs import(graph::RenderGraph& graph) const;
 
     rhi::Extent2D size() const { return size_; }
@@ -35,6 +38,7 @@ private:
     std::array<rhi::Texture, kInputChannelCount> textures_;
     std::array<bool, kInputChannelCount> uploaded_{};
     std::vector<float> staging_;
+    std::shared_ptr<FrameCamera> camera_ = std::make_shared<FrameCamera>();
 };
 
 } // namespace hush::passes

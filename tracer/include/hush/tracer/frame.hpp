@@ -80,6 +80,9 @@ struct Frame {
     uint32_t index = 0;            // position in the sequence
     std::string scene;             // which scene made it
     uint32_t referenceSpp = 0;     // samples per pixel of Reference, if present
+    // Metres per world unit (Scene::sceneScale): what chains with thresholds in metres
+    // (Mara et al.'s 5 cm / 7 cm) scale by. 1 when a renderer does not say.
+    float metresPerUnit = 1.0f;
     CameraInfo camera;
     CameraInfo previousCamera;     // last frame's camera (equal to camera on frame 0)
     std::map<Channel, Image> channels;

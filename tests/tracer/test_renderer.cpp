@@ -159,3 +159,31 @@ TEST_CASE("renderer: only the channels asked for are made", "[tracer][channels]"
     settings.channels.clear();
     REQUIRE_THROWS_WITH(renderer.render(0, settings), Catch::Contains("no channels"));
 }
+
+TEST_CASE("renderer: in Mara mode direct + indirect still estimates the colour", "[tracer][mara]") {
+    // Mara's direct term samples lights only; the sky through the primary bounce
+    // must then reach `indirect`, or a chain that adds the two (SVGF) loses it.
+    const Renderer renderer(test::tabletop(false));
+    RenderSettings settings;
+    settings.width = 24;
+    settings.height = 16;
+    settings.channels = {Channel::Color, Channel::Direct, Channel::Indirect, Channel::Matte};
+    double color = 0.0, split = 0.0, pathIndirect = 0.0;
+    for (uint32_t f = 0; f < 24; ++f) {
+        const Frame frame = renderer.render(f, settings);
+        const auto& c = frame.get(Channel::Color).pixels;
+        const auto& d = frame.get(Channel::Direct).pixels;
+        const auto& i = frame.get(Channel::Indirect).pixels;
+        for (size_t k = 0; k < c.size(); ++k) {
+            color += c[k];
+            split += double(d[k]) + i[k];
+        }
+    }
+    settings.channels = {Channel::Indirect};   // path mode: the sky bounce counts as direct there
+    for (uint32_t f = 0; f < 24; ++f) {
+        const Frame frame = renderer.render(f, settings);   // keep it: get() returns a reference into it
+        for (const float v : frame.get(Channel::Indirect).pixels) pathIndirect += v;
+    }
+    INFO("mean colour " << color << ", direct + indirect " << split << ", path-mode indirect " << pathIndirect);
+    REQUIRE(std::abs(split - color) < 0.03 * color);
+}

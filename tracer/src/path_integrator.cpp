@@ -82,12 +82,15 @@ void continuePath(const World& world, Hit x, glm::vec3 rayDir, uint32_t depth, P
         const Hit next = world.intersect(offsetRay(x, wi), wi);
         if (!next.valid) {
             const float sunWeight = bs.delta ? 1.0f : powerHeuristic(bs.pdf, world.sunPdf(wi));
-            target += throughput * (world.skyRadiance(wi) + world.sunRadiance(wi) * sunWeight);
+            const glm::vec3 sky = throughput * world.skyRadiance(wi), sun = throughput * world.sunRadiance(wi);
+            target += sky + sun * sunWeight;
+            if (depth == 0) out.directUnsampled += sky + (bs.delta ? sun : glm::vec3(0.0f));
             return;
         }
         if (emits(next)) {
             const float weight = bs.delta ? 1.0f : powerHeuristic(bs.pdf, world.emitterPdf(x.position, next));
             target += throughput * emitted(next) * weight;
+            if (depth == 0 && bs.delta) out.directUnsampled += throughput * emitted(next);
         }
         if (last) return;
         x = next;

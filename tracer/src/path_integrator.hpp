@@ -19,6 +19,10 @@ struct PathOptions {
 struct PathEstimate {
     glm::vec3 direct{0.0f};     // emission seen, plus light reaching the primary hit straight from emitters, sun, sky
     glm::vec3 indirect{0.0f};   // light reaching the primary hit through other surfaces
+    // The part of `direct` that light sampling cannot find: the sky through the
+    // primary hit's bounce, lights and sun seen through a mirror (delta) lobe. Mara
+    // mode's many-sample direct term leaves it out, so `indirect` carries it there.
+    glm::vec3 directUnsampled{0.0f};
 };
 
 // `primary` is the camera ray's hit (valid or not) along `direction`.

@@ -159,7 +159,9 @@ Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, cons
                 const PathEstimate e = estimatePath(world, dir, hit, sampler, options);
                 const glm::vec3 direct = finiteOrZero(e.direct), indirect = finiteOrZero(e.indirect);
                 put(frame, Channel::Color, x, y, direct + indirect);
-                put(frame, Channel::Indirect, x, y, indirect);
+                // Mara mode's direct term is light sampling only: what it cannot see
+                // moves to `indirect`, so direct + indirect still estimates colour.
+                put(frame, Channel::Indirect, x, y, mara ? indirect + finiteOrZero(e.directUnsampled) : indirect);
                 if (!mara) put(frame, Channel::Direct, x, y, direct);
             }
             if (mara) {

@@ -40,7 +40,7 @@ rhi::SubmissionId RenderGraph::execute() {
         const uint32_t p = c.order[i];
         recordBarriers(enc, c.passBarriers[i][parity]);
         if (timed) enc.writeTimestamp(slot.queries, uint32_t(1 + 2 * i));
-        PassContext ctx(c, enc, parity, historyValid_, frame_);
+        PassContext ctx(c, enc, parity, historyValid_, frame_, framesSinceHistoryReset_);
         passes_[p].execute(ctx);
         if (timed) enc.writeTimestamp(slot.queries, uint32_t(2 + 2 * i));
     }

@@ -133,6 +133,7 @@ TextureHandle RenderGraph::historySource(TextureHandle history) const {
 void RenderGraph::markOutput(TextureHandle texture) {
     if (texture.index >= model_.resources.size())
         throw Error(ErrorKind::InvalidArgument, "markOutput: the texture handle does not belong to this graph");
+    if (model_.resources[texture.index].output) return;   // nothing changes: no recompile
     model_.resources[texture.index].output = true;
     markDirty();
 }
@@ -140,6 +141,7 @@ void RenderGraph::markOutput(TextureHandle texture) {
 void RenderGraph::markOutput(BufferHandle buffer) {
     if (buffer.index >= model_.resources.size())
         throw Error(ErrorKind::InvalidArgument, "markOutput: the buffer handle does not belong to this graph");
+    if (model_.resources[buffer.index].output) return;
     model_.resources[buffer.index].output = true;
     markDirty();
 }

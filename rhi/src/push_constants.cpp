@@ -45,13 +45,18 @@ const PushConstantMember& PushConstants::require(std::string_view member, Scalar
     return *m;
 }
 
-PushConstants::Slot PushConstants::slot(std::string_view member, ScalarType type) const {
-    const auto& m = require(member, type, 1);
-    return {m.offset, uint32_t(&m - pipeline_.pushConstantMembers().data())};
+PushConstants::Slot PushConstants::slot(std::string_view member, ScalarType type, uint32_t values) const {
+    const auto& m = require(member, type, values);
+    return {m.offset, uint32_t(&m - pipeline_.pushConstantMembers().data()), values};
 }
 
-void PushConstants::write(Slot slot, const void* value) {
-    std::memcpy(bytes_.data() + slot.offset, value, 4);
+void PushConstants::write(Slot slot, const void* values, uint32_t count) {
+    if (count != slot.values)
+        throw Error(ErrorKind::BindingMismatch, "pipeline '" + pipeline_.label() + "': push constant #" +
+                                                    std::to_string(slot.member) + " takes " +
+                                                    std::to_string(slot.values) + " values, written with " +
+                                                    std::to_string(count));
+    std::memcpy(bytes_.data() + slot.offset, values, 4 * size_t(count));
     written_ |= 1ull << slot.member;
 }
 

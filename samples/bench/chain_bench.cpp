@@ -173,7 +173,10 @@ int run(const Options& options) {
         printRooflines(rooflines);
         for (const auto& t : timings)
             for (size_t s = 0; s < options.sizes.size(); ++s)
-                if (options.sizes[s] == t.size) printTiming(t, rooflines[s]);
+                if (options.sizes[s] == t.size) {
+                    printTiming(t, rooflines[s]);
+                    printPaperShares(t);
+                }
         printMemory(timings);
     }
     if (options.quality) printQuality(quality, options);

@@ -97,8 +97,7 @@ struct QualityRow {
 };
 
 // chain_bench_timing.cpp
-// The channels every chain may read: color, direct, indirect, emission, albedo,
-// normal, position, depth, motion, meshid.
+// Every layer but the reference: what any chain may read.
 std::vector<tracer::Channel> denoiserChannels();
 // Frame 0 of the cornell box's camera path at 1 spp, with denoiserChannels().
 tracer::Frame renderTimingFrame(Extent2D size);
@@ -112,6 +111,8 @@ std::vector<QualityRow> measureQuality(const rhi::Device& device, const Options&
 // chain_bench_report.cpp
 void printRooflines(const std::vector<Roofline>& rooflines);
 void printTiming(const TimingResult& result, const Roofline& roofline);
+// The paper's per-stage times beside ours, for a chain whose paper gives them (Mara: Table 1).
+void printPaperShares(const TimingResult& result);
 void printMemory(const std::vector<TimingResult>& results);
 void printQuality(const std::vector<QualityRow>& rows, const Options& options);
 std::string toJson(const Options& options, const AdapterInfo& adapter, bool validation,

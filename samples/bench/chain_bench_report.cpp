@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "chain_bench.hpp"
+#include "paper_stage_times.hpp"
 #include "graph_memory_json.hpp"
 
 namespace hush::bench::chain_bench {
@@ -38,6 +39,29 @@ void printTiming(const TimingResult& t, const Roofline& roofline) {
                 100.0 * t.ofRoofline);
     if (t.nonFiniteOutput != 0) std::printf("WARNING: %llu non-finite output values\n",
                                             static_cast<unsigned long long>(t.nonFiniteOutput));
+}
+
+void printPaperShares(const TimingResult& t) {
+    const auto& stages = paperStages(t.chain);
+    if (stages.empty()) return;
+    auto msOf = [&](const PaperStage& stage) {
+        double ms = 0.0;
+        for (const auto& p : t.passes)
+            for (auto name : stage.passes) ms += p.name == name ? p.gpuMs.median : 0.0;
+        return ms;
+    };
+    double ours = 0.0, paper = 0.0;
+    for (const auto& stage : stages) ours += msOf(stage), paper += stage.paperMs;
+    std::printf("\n%s at %s against the paper's stage times (share of the numbered stages' sum; the paper: "
+                "1280x720 on a Titan X)\n\n| stage | ms | share | paper ms | paper share |\n"
+                "| --- | ---: | ---: | ---: | ---: |\n",
+                t.chain.c_str(), sizeText(t.size).c_str());
+    for (const auto& stage : stages) {
+        const double ms = msOf(stage);
+        std::printf("| %.*s | %.3f | %.1f %% | %.2f | %.1f %% |\n", int(stage.label.size()), stage.label.data(), ms,
+                    ours > 0 ? 100.0 * ms / ours : 0.0, stage.paperMs, 100.0 * stage.paperMs / paper);
+    }
+    std::printf("| sum | %.3f | | %.2f | |\n", ours, paper);
 }
 
 void printMemory(const std::vector<TimingResult>& results) {

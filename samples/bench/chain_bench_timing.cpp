@@ -66,9 +66,12 @@ uint64_t countNonFinite(const std::vector<float>& values) {
 } // namespace
 
 std::vector<tracer::Channel> denoiserChannels() {
-    using tracer::Channel;
-    return {Channel::Color,    Channel::Direct, Channel::Indirect, Channel::Emission, Channel::Albedo,
-            Channel::Normal,   Channel::Position, Channel::Depth, Channel::Motion,   Channel::MeshId};
+    // Every layer a chain may read (Mara's too; asking for them makes `direct` Mara's
+    // low-noise direct light, for every chain alike). The reference is added per frame.
+    std::vector<tracer::Channel> channels;
+    for (const auto channel : tracer::kAllChannels)
+        if (channel != tracer::Channel::Reference) channels.push_back(channel);
+    return channels;
 }
 
 tracer::Frame renderTimingFrame(Extent2D size) {

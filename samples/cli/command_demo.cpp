@@ -27,7 +27,8 @@ const std::string& usage() {
         "                 [--reuse-frames] [--threads <n>] [--adapter <text>]\n"
         "\n"
         "The main job: renders the scene's camera path (1 sample per pixel, split into direct\n"
-        "and indirect light, with a G-buffer and motion; a reference on every k-th frame),\n"
+        "and indirect light and into Mara et al.'s matte and glossy terms, with a G-buffer\n"
+        "and motion; a reference on every k-th frame),\n"
         "writes the frames to <out>/frames/, denoises them with each chain, and writes\n"
         "  <out>/<chain>/frame_<i>.exr and .png    filtered radiance and display image\n"
         "  <out>/side_by_side/frame_<i>.png        noisy | chains | reference, scored frames\n"
@@ -41,7 +42,7 @@ const std::string& usage() {
         "  --frames <n>            default 32\n"
         "  --reference-every <k>   default 8 (frames 7, 15, 23, 31 are scored)\n"
         "  --reference-spp <n>     samples per pixel of each reference (default 512)\n"
-        "  --chain <list>          default: eaw,svgf,bmfr (the strip follows this order)\n"
+        "  --chain <list>          default: eaw,svgf,bmfr,mara (the strip follows this order)\n"
         "  --reuse-frames          denoise the frames already in <out>/frames/ instead of rendering\n"
         "  --threads <n>           rendering threads (default: every core)\n"
         "  --adapter <text>        use the first adapter whose name contains <text>\n";
@@ -49,17 +50,19 @@ const std::string& usage() {
 }
 
 int runDemo(std::span<const std::string_view> args) {
-    std::string sceneName = "cornell", out = "out", chains = "eaw,svgf,bmfr";
+    std::string sceneName = "cornell", out = "out", chains = "eaw,svgf,bmfr,mara";
     SequenceRequest sequence;
     sequence.frames = DemoDefaults::frames;
     sequence.referenceEvery = DemoDefaults::referenceEvery;
     auto& settings = sequence.settings;
     settings.width = settings.height = DemoDefaults::size;
     settings.referenceSpp = DemoDefaults::referenceSpp;
-    settings.channels = {tracer::Channel::Color,  tracer::Channel::Direct, tracer::Channel::Indirect,
-                         tracer::Channel::Albedo, tracer::Channel::Normal, tracer::Channel::Position,
-                         tracer::Channel::Depth,  tracer::Channel::Motion, tracer::Channel::MeshId,
-                         tracer::Channel::Emission};
+    // Every layer but the reference (added on the scored frames). Asking for Mara et
+    // al.'s matte and glossy terms makes `direct` their low-noise direct light, for
+    // every chain alike (docs/tracer.md).
+    settings.channels.clear();
+    for (const auto channel : tracer::kAllChannels)
+        if (channel != tracer::Channel::Reference) settings.channels.push_back(channel);
     rhi::AdapterRequest request;
     bool reuse = false;
     for (size_t i = 0; i < args.size(); ++i) {

@@ -28,7 +28,7 @@ const std::string& usage() {
         "plus the temporal error between consecutive outputs.\n"
         "\n"
         "options:\n"
-        "  --chain <list>    comma-separated built-in chains (svgf, eaw, bmfr) or chain files\n"
+        "  --chain <list>    comma-separated built-in chains (svgf, eaw, bmfr, mara) or chain files\n"
         "                    (docs/passes/chain-files.md); default: svgf\n"
         "  --in <folder>     the frames\n"
         "  --out <folder>    where outputs go (created if missing)\n"
@@ -111,7 +111,7 @@ int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterR
 }
 
 const Command& denoiseCommand() {
-    static const Command command{"denoise", "denoise frames with chains (svgf, eaw, a chain file); report quality",
+    static const Command command{"denoise", "denoise frames with chains (svgf, eaw, bmfr, mara, a chain file); report quality",
                                  usage(), runDenoise};
     return command;
 }

@@ -3,6 +3,7 @@
 #include "frame_upload.hpp"
 
 #include <cmath>
+#include <map>
 
 #include <hush/passes/common/tonemap.hpp>
 #include <hush/tracer/builtin_scenes.hpp>
@@ -30,6 +31,24 @@ std::vector<tracer::Frame> renderCornell(uint32_t size) {
     return out;
 }
 } // namespace
+
+const std::vector<tracer::Frame>& sceneSequence(const std::string& scene, uint32_t size) {
+    static std::map<std::pair<std::string, uint32_t>, std::vector<tracer::Frame>> cache;
+    auto& frames = cache[{scene, size}];
+    if (!frames.empty()) return frames;
+    const tracer::Renderer renderer(tracer::makeBuiltinScene(scene));
+    tracer::RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.referenceSpp = 128;
+    for (uint32_t i = 0; i < 16; ++i) {
+        settings.channels.clear();
+        for (const auto channel : tracer::kAllChannels)
+            if (channel != tracer::Channel::Reference) settings.channels.push_back(channel);
+        if (i == 7 || i == 11 || i == 15) settings.channels.push_back(tracer::Channel::Reference);
+        frames.push_back(renderer.render(i, settings));
+    }
+    return frames;
+}
 
 const std::vector<tracer::Frame>& cornellSequence() {
     static const std::vector<tracer::Frame> frames = renderCornell(96);

@@ -20,6 +20,12 @@ const std::vector<tracer::Frame>& cornellSequence();
 // The same path at 128x128 (BMFR's 32-pixel blocks need room: Sec. 6.1 sizes them for 720p).
 const std::vector<tracer::Frame>& cornellSequence128();
 
+// A built-in scene's camera path at size x size, 16 frames, 1 bounce, with every layer
+// (Mara et al.'s matte, glossy and virtual positions, and their low-noise direct
+// light, included); frames 7, 11 and 15 have a 128-spp reference. Rendered on first
+// use, once per scene and size.
+const std::vector<tracer::Frame>& sceneSequence(const std::string& scene, uint32_t size);
+
 // Called with each channel's pixels before upload, to inject faults.
 using ChannelEdit = frames::ChannelEdit;
 void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame, const ChannelEdit& edit = {});

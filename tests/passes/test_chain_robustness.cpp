@@ -8,6 +8,7 @@
 
 #include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/eaw/chain.hpp>
+#include <hush/passes/mara/chain.hpp>
 #include <hush/passes/svgf/chain.hpp>
 
 #include "chain_test_util.hpp"
@@ -23,8 +24,16 @@ namespace {
 std::unique_ptr<passes::Chain> makeChain(const std::string& name) {
     if (name == "svgf") return std::make_unique<passes::SvgfChain>();
     if (name == "bmfr") return std::make_unique<passes::BmfrChain>();
+    if (name == "mara") return std::make_unique<passes::MaraChain>();
     return std::make_unique<passes::EawChain>();
 }
+
+// Mara's chain reads its own layers (matte, glossy, virtual positions).
+const std::vector<tracer::Frame>& sequenceFor(const std::string& name) {
+    return name == "mara" ? sceneSequence("cornell", 96) : cornellSequence();
+}
+
+const char* const kChains[] = {"svgf", "eaw", "bmfr", "mara"};
 
 // NaN, +Inf and -Inf in 16 scattered pixels (every component) of one channel.
 ChannelEdit injectNonFinite(InputChannel target) {
@@ -45,17 +54,22 @@ ChannelEdit injectNonFinite(InputChannel target) {
 TEST_CASE("non-finite values in any input channel never reach the output, and the output recovers in 2 frames",
           "[chain][robustness]") {
     test::ValidationScope scope;
-    const auto all = cornellSequence();
-    const std::vector<tracer::Frame> frames(all.begin(), all.begin() + 8);
     constexpr size_t kInjected = 4;
-    for (const std::string name : {"svgf", "eaw", "bmfr"}) {
+    for (const std::string name : kChains) {
+        const auto& all = sequenceFor(name);
+        const std::vector<tracer::Frame> frames(all.begin(), all.begin() + 8);
         const auto clean = runSequence(makeChain(name), frames);
-        for (auto channel : makeChain(name)->inputs()) {
+        const auto channels =
+            passes::ChainRunner(test::gpu().device, makeChain(name), {frames[0].width, frames[0].height})
+                .inputs()
+                .channels();   // with the optional ones the frames carry
+        for (auto channel : channels) {
             INFO(name << ": injected into '" << passes::inputChannelInfo(channel).name << "' of frame " << kInjected);
             passes::ChainRunner runner(test::gpu().device, makeChain(name), {frames[0].width, frames[0].height});
             const auto histories = markHistorySources(runner.graph());
             if (name == "svgf") REQUIRE(histories.size() >= 5);   // surface x2, colour, moments, TAA
             if (name == "bmfr") REQUIRE(histories.size() >= 5);   // surface x2, both accumulations, TAA
+            if (name == "mara") REQUIRE(histories.size() >= 4);   // matte, positions, glossy, virtual positions
             for (size_t f = 0; f < frames.size(); ++f) {
                 uploadFrame(runner, frames[f], f == kInjected ? injectNonFinite(channel) : ChannelEdit{});
                 runner.run();
@@ -98,6 +112,12 @@ tracer::Frame syntheticFrame(uint32_t w, uint32_t h, const std::function<float(u
     fill(tracer::Channel::Motion, [](uint32_t, uint32_t, uint32_t) { return 0.0f; });
     fill(tracer::Channel::MeshId, [](uint32_t, uint32_t, uint32_t) { return 0.0f; });
     fill(tracer::Channel::Emission, [](uint32_t, uint32_t, uint32_t) { return 0.0f; });
+    // Mara et al.'s layers: the radiance as its matte and glossy terms.
+    fill(tracer::Channel::Matte, rad);
+    fill(tracer::Channel::Glossy, rad);
+    fill(tracer::Channel::Specular, [](uint32_t, uint32_t, uint32_t) { return 0.04f; });
+    fill(tracer::Channel::Roughness, [](uint32_t, uint32_t, uint32_t) { return 0.3f; });
+    fill(tracer::Channel::VirtualPos, [](uint32_t x, uint32_t y, uint32_t k) { return k == 0 ? 0.01f * float(x) : k == 1 ? -0.01f * float(y) : -4.0f; });
     return f;
 }
 
@@ -115,7 +135,7 @@ TEST_CASE("extreme inputs give finite outputs in range", "[chain][robustness]") 
         {"65504", [](uint32_t, uint32_t) { return 65504.0f; }},
         {"1e6 fireflies", [](uint32_t x, uint32_t y) { return (x * 7 + y * 13) % 29 == 0 ? 1e6f : 0.5f; }},
     };
-    for (const std::string name : {"svgf", "eaw", "bmfr"})
+    for (const std::string name : kChains)
         for (const auto& c : cases) {
             INFO(name << ": " << c.what);
             const std::vector<tracer::Frame> frames(4, syntheticFrame(32, 24, c.radiance));
@@ -135,7 +155,7 @@ TEST_CASE("extreme inputs give finite outputs in range", "[chain][robustness]") 
 
 TEST_CASE("odd sizes run: 1x1, 3x5 and 257x131", "[chain][robustness]") {
     test::ValidationScope scope;
-    for (const std::string name : {"svgf", "eaw", "bmfr"})
+    for (const std::string name : kChains)
         for (auto size : {rhi::Extent2D{1, 1}, rhi::Extent2D{3, 5}, rhi::Extent2D{257, 131}}) {
             INFO(name << " at " << size.width << "x" << size.height);
             const std::vector<tracer::Frame> frames(
@@ -150,18 +170,21 @@ TEST_CASE("odd sizes run: 1x1, 3x5 and 257x131", "[chain][robustness]") {
 
 TEST_CASE("a camera cut with resetHistory forgets the frames before it", "[chain][robustness]") {
     test::ValidationScope scope;
-    const auto& frames = cornellSequence();
-    // Frames 0..5, then a cut to a different picture (frame 12), against a fresh chain.
-    passes::ChainRunner cut(test::gpu().device, makeChain("svgf"), {frames[0].width, frames[0].height});
-    for (size_t f = 0; f < 6; ++f) {
-        uploadFrame(cut, frames[f]);
+    for (const std::string name : {"svgf", "mara"}) {
+        INFO(name);
+        const auto& frames = sequenceFor(name);
+        // Frames 0..5, then a cut to a different picture (frame 12), against a fresh chain.
+        passes::ChainRunner cut(test::gpu().device, makeChain(name), {frames[0].width, frames[0].height});
+        for (size_t f = 0; f < 6; ++f) {
+            uploadFrame(cut, frames[f]);
+            cut.run();
+        }
+        cut.resetHistory();
+        uploadFrame(cut, frames[12]);
         cut.run();
+        const auto afterCut = cut.readDisplay();
+        const auto fresh = runSequence(makeChain(name), {frames[12]});
+        CHECK(relativeL1(afterCut, fresh[0]) < 1e-6);
     }
-    cut.resetHistory();
-    uploadFrame(cut, frames[12]);
-    cut.run();
-    const auto afterCut = cut.readDisplay();
-    const auto fresh = runSequence(makeChain("svgf"), {frames[12]});
-    CHECK(relativeL1(afterCut, fresh[0]) < 1e-6);
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }

@@ -10,6 +10,7 @@
 #include <hush/core/error.hpp>
 #include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/eaw/chain.hpp>
+#include <hush/passes/mara/chain.hpp>
 #include <hush/passes/settings_json.hpp>
 #include <hush/passes/svgf/chain.hpp>
 
@@ -40,7 +41,8 @@ template <class C, class S> BuiltinChain builtin(std::string_view name) {
 const std::vector<BuiltinChain>& builtinChains() {
     static const std::vector<BuiltinChain> chains{builtin<SvgfChain, SvgfSettings>("svgf"),
                                                   builtin<EawChain, EawChainSettings>("eaw"),
-                                                  builtin<BmfrChain, BmfrSettings>("bmfr")};
+                                                  builtin<BmfrChain, BmfrSettings>("bmfr"),
+                                                  builtin<MaraChain, MaraSettings>("mara")};
     return chains;
 }
 
@@ -70,6 +72,7 @@ public:
     NamedChain(std::string name, std::unique_ptr<Chain> inner) : name_(std::move(name)), inner_(std::move(inner)) {}
     std::string name() const override { return name_; }
     std::vector<InputChannel> inputs() const override { return inner_->inputs(); }
+    std::vector<InputChannel> optionalInputs() const override { return inner_->optionalInputs(); }
     ChainOutputs build(NodeContext& ctx, const DenoiseInputs& inputs) override { return inner_->build(ctx, inputs); }
     const Chain& inner() const { return *inner_; }
 

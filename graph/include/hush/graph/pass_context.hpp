@@ -22,6 +22,10 @@ public:
     bool historyValid() const { return historyValid_; }
     rhi::Extent2D outputSize() const;
     uint64_t frameIndex() const { return frame_; }
+    // Frames since the history was last reset (0 on the first frame and after
+    // resetHistory()): what a pattern that varies frame by frame should count, so that
+    // a chain after a cut does what a new chain does.
+    uint64_t historyFrame() const { return historyFrame_; }
 
     // The common case: one dispatch of `pipeline` with one bind group (at the set it
     // was declared for) covering threads.width x threads.height invocations, with its
@@ -35,8 +39,9 @@ public:
     }
 
     PassContext(const CompiledGraph& graph, rhi::CommandEncoder& encoder, uint32_t parity, bool historyValid,
-                uint64_t frame)
-        : graph_(graph), encoder_(encoder), parity_(parity), historyValid_(historyValid), frame_(frame) {}
+                uint64_t frame, uint64_t historyFrame)
+        : graph_(graph), encoder_(encoder), parity_(parity), historyValid_(historyValid), frame_(frame),
+          historyFrame_(historyFrame) {}
 
 private:
     void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads,
@@ -47,6 +52,7 @@ private:
     uint32_t parity_;
     bool historyValid_;
     uint64_t frame_;
+    uint64_t historyFrame_;
 };
 
 } // namespace hush::graph

@@ -44,15 +44,19 @@ public:
     bool has(std::string_view member) const { return find(member) != nullptr; }
 
     // A member written later, every frame: resolved (and type-checked) now, so that
-    // writing it searches and allocates nothing.
+    // writing it searches and allocates nothing. `values`: its component count
+    // (vec4: 4; vec4 m[4]: 16).
     struct Slot {
         uint32_t offset = 0;
         uint32_t member = 0;
+        uint32_t values = 1;
     };
-    Slot slot(std::string_view member, ScalarType type) const;
-    void set(Slot slot, float value) { write(slot, &value); }
-    void set(Slot slot, int32_t value) { write(slot, &value); }
-    void set(Slot slot, uint32_t value) { write(slot, &value); }
+    Slot slot(std::string_view member, ScalarType type, uint32_t values = 1) const;
+    void set(Slot slot, float value) { write(slot, &value, 1); }
+    void set(Slot slot, int32_t value) { write(slot, &value, 1); }
+    void set(Slot slot, uint32_t value) { write(slot, &value, 1); }
+    // Throws hush::Error (BindingMismatch) unless the span has the slot's component count.
+    void set(Slot slot, std::span<const float> values) { write(slot, values.data(), uint32_t(values.size())); }
 
     // Throws hush::Error (BindingMismatch) naming the first member never written.
     void requireComplete() const;
@@ -64,7 +68,7 @@ public:
 private:
     const PushConstantMember* find(std::string_view member) const;
     const PushConstantMember& require(std::string_view member, ScalarType type, uint32_t values) const;
-    void write(Slot slot, const void* value);
+    void write(Slot slot, const void* values, uint32_t count);
 
     ComputePipeline pipeline_;
     std::array<std::byte, kMaxBytes> bytes_{};

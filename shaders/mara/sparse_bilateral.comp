@@ -1,0 +1,77 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+// Mara et al. 2017 stages 4 and 7, the sparse cross-bilateral filter (seed 000 Sec.
+// 3.4): `taps` taps on a spiral over a disk (McGuire et al. 2012's ambient-obscurance
+// pattern, which Mara et al. 2016 also use), turned per pixel and per frame so that
+// the pattern varies in time; Gaussian over the disk (sigma = radius / 2) times the
+// plane and normal weights (shaders/mara/bilateral.glsl). Tap i of n:
+//   a = (i + 0.5) / n,   angle = 2 pi (spiralTurns a + rotation),   offset = radius a (cos, sin)
+//   tap = p + floor(offset + 0.5)
+//   rotation = pcg(x + pcg(y + pcg(frame))) / 2^32   (Jarzynski & Olano 2020's PCG hash:
+//   integer arithmetic, so the CPU reference reproduces it bit for bit)
+// The radius is `radiusPixels` (stage 4: 0.5% of the width), or, with useRadiusMap,
+// the r32f `radius` map of the disocclusion stage (stage 7).
+#include "common/grid.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform texture2D color;
+layout(set = 0, binding = 1) uniform texture2D normal_depth;
+layout(set = 0, binding = 2) uniform texture2D position;
+layout(set = 0, binding = 3) uniform texture2D radius;   // read with useRadiusMap
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D filtered;
+
+layout(push_constant) uniform Params {
+    uint taps;
+    float spiralTurns;
+    float radiusPixels;
+    float planeSigma;
+    float normalPower;
+    uint useRadiusMap;
+    uint frame;
+} params;
+
+#include "mara/bilateral.glsl"
+
+const float kTwoPi = 6.28318530718;
+
+uint pcgHash(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+void main() {
+    ivec2 p = hushPixel();
+    ivec2 size = imageSize(filtered);
+    if (!hushInside(p, size)) {
+        return;
+    }
+    vec4 centre = texelFetch(color, p, 0);
+    float r = params.useRadiusMap != 0u ? texelFetch(radius, p, 0).x : params.radiusPixels;
+    vec4 nd = texelFetch(normal_depth, p, 0);
+    if (!maraHasSurface(nd) || !(r > 0.0)) {
+        imageStore(filtered, p, centre);
+        return;
+    }
+    MaraCentre c = maraCentre(p);
+    float rotation = float(pcgHash(uint(p.x) + pcgHash(uint(p.y) + pcgHash(params.frame)))) * (1.0 / 4294967296.0);
+    float inverseTwoSigma2 = 2.0 / (r * r);   // sigma = r / 2
+    vec3 sum = centre.rgb;
+    float weightSum = 1.0;
+    for (uint i = 0u; i < params.taps; ++i) {
+        float a = (float(i) + 0.5) / float(params.taps);
+        float angle = kTwoPi * (params.spiralTurns * a + rotation);
+        vec2 offset = r * a * vec2(cos(angle), sin(angle));
+        ivec2 q = p + ivec2(floor(offset + 0.5));
+        if (q == p || !hushInside(q, size)) {
+            continue;
+        }
+        float w = exp(-dot(offset, offset) * inverseTwoSigma2) *
+                  maraGeometryWeight(c, q, params.planeSigma, params.normalPower);
+        sum += w * texelFetch(color, q, 0).rgb;
+        weightSum += w;
+    }
+    imageStore(filtered, p, vec4(sum / weightSum, centre.a));
+}

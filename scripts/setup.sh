@@ -22,11 +22,15 @@ packages=(
   libembree-dev                 # the CPU path tracer (tracer/)
   libopenexr-dev                # frame files (tracer/)
   libglm-dev                    # maths (tracer/)
+  libimath-dev                  # half.h: fp16 conversion (core/)
   nlohmann-json3-dev            # JSON scene and chain files (tracer/, passes/)
   libpng-dev                    # PNG images of the denoised frames (samples/cli)
   catch2                        # test framework (v2)
   vulkan-validationlayers       # tests run with validation + synchronization validation
   vulkan-tools                  # vulkaninfo, for diagnosing a machine
+  python3-torch                 # the RDAE training toolkit (samples/rdae_training) and its tests; not the C++ build
+  python3-numpy
+  python3-matplotlib            # the training's loss curve (PNG)
 )
 
 log() { printf '[setup] %s\n' "$*"; }

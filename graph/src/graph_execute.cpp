@@ -104,12 +104,12 @@ const rhi::BindGroup& PassContext::bindGroup(BindGroupHandle handle) const {
 rhi::Extent2D PassContext::outputSize() const { return graph_.outputSize; }
 
 void PassContext::dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads,
-                           const rhi::PushConstants* params) {
+                           uint32_t layers, const rhi::PushConstants* params) {
     auto pass = encoder_.beginComputePass();
     pass.setPipeline(pipeline);
     pass.setBindGroup(graph_.bindGroupSets[group.pass][group.index], bindGroup(group));
     if (params) pass.setPushConstants(*params);
-    pass.dispatchThreads(threads.width, threads.height);
+    pass.dispatchThreads(threads.width, threads.height, layers);
     pass.end();
 }
 

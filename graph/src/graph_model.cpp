@@ -7,8 +7,12 @@ namespace hush::graph {
 
 rhi::Extent2D SizeSpec::resolve(rhi::Extent2D output) const {
     if (mode == Mode::Absolute) return extent;
-    auto scaled = [&](uint32_t v) { return std::max<uint32_t>(1, uint32_t(std::lround(double(v) * scale))); };
-    return {scaled(output.width), scaled(output.height)};
+    const uint32_t pad = std::max<uint32_t>(1, padTo);
+    auto scaled = [&](uint32_t v) {
+        const uint64_t padded = (uint64_t(v) + pad - 1) / pad * pad;
+        return std::max<uint32_t>(1, uint32_t(std::lround(double(padded) * scale)));
+    };
+    return {scaled(output.width) * std::max<uint32_t>(1, tilesX), scaled(output.height) * std::max<uint32_t>(1, tilesY)};
 }
 
 bool isWrite(Access access) {

@@ -6,6 +6,7 @@
 #include <hush/passes/chain_front_end.hpp>
 
 #include <hush/core/error.hpp>
+#include <hush/core/half.hpp>
 
 namespace hush::passes {
 
@@ -43,20 +44,30 @@ void ChainRunner::run() {
     graph_.waitIdle();
 }
 
-std::vector<float> ChainRunner::readRgba(graph::TextureHandle h) const {
+std::vector<float> ChainRunner::readTexture(graph::TextureHandle h) const {
     const auto& texture = graph_.outputTexture(h);
-    if (texture.format() != rhi::Format::RGBA32Float)
+    const auto format = texture.format();
+    if (format != rhi::Format::RGBA32Float && format != rhi::Format::RGBA16Float)
         throw Error(ErrorKind::InvalidArgument, "chain '" + chain_->name() + "': output '" + texture.label() +
-                                                    "' is " + std::string(rhi::toString(texture.format())) +
-                                                    ", not rgba32float");
+                                                    "' is " + std::string(rhi::toString(format)) +
+                                                    ", not rgba32float or rgba16float");
     auto bytes = device_.queue().readTexture({.texture = texture, .state = graph_.outputState(h)});
-    std::vector<float> values(bytes.size() / sizeof(float));
-    std::memcpy(values.data(), bytes.data(), values.size() * sizeof(float));
+    if (format == rhi::Format::RGBA32Float) {
+        std::vector<float> values(bytes.size() / sizeof(float));
+        std::memcpy(values.data(), bytes.data(), values.size() * sizeof(float));
+        return values;
+    }
+    std::vector<float> values(bytes.size() / sizeof(uint16_t));
+    for (size_t i = 0; i < values.size(); ++i) {
+        uint16_t bits;
+        std::memcpy(&bits, bytes.data() + 2 * i, 2);
+        values[i] = core::halfToFloat(bits);
+    }
     return values;
 }
 
-std::vector<float> ChainRunner::readDisplay() const { return readRgba(outputs_.display); }
-std::vector<float> ChainRunner::readRadiance() const { return readRgba(outputs_.radiance); }
+std::vector<float> ChainRunner::readDisplay() const { return readTexture(outputs_.display); }
+std::vector<float> ChainRunner::readRadiance() const { return readTexture(outputs_.radiance); }
 
 std::array<uint32_t, kInputChannelCount> ChainRunner::sanitizedCounts() const {
     std::array<uint32_t, kInputChannelCount> counts{};

@@ -14,6 +14,7 @@
 
 #include "bandwidth_probe.hpp"
 #include "bench_report.hpp"
+#include "fma_probe.hpp"
 
 namespace hush::bench {
 namespace {
@@ -115,11 +116,6 @@ void printTable(const std::vector<Row>& rows) {
 }
 
 std::string toJson(const Options& options, const AdapterInfo& adapter, const std::vector<Row>& rows) {
-    auto number = [](double value) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.6g", value);
-        return std::string(text);
-    };
     std::string json = resultsHead({.program = "bandwidth", .commandLine = options.commandLine,
                                     .device = adapter.reportFields(), .validation = false});
     json += "  \"runs\": " + std::to_string(options.runs) + ",\n";
@@ -134,8 +130,8 @@ std::string toJson(const Options& options, const AdapterInfo& adapter, const std
                 ", \"bytes_per_pixel\": " + std::to_string(p.bytesPerPixel) +
                 ", \"bytes_read\": " + std::to_string(p.bytes()) + ", \"bytes_written\": " + std::to_string(p.bytes());
         if (row.skipped.empty()) {
-            json += ", \"median_ms\": " + number(row.ms.median) + ", \"min_ms\": " + number(row.ms.min) +
-                    ", \"max_ms\": " + number(row.ms.max) + ", \"gbps\": " + number(row.gbps) +
+            json += ", \"median_ms\": " + jsonNumber(row.ms.median) + ", \"min_ms\": " + jsonNumber(row.ms.min) +
+                    ", \"max_ms\": " + jsonNumber(row.ms.max) + ", \"gbps\": " + jsonNumber(row.gbps) +
                     ", \"timer\": " + jsonString(row.timings.timer) +
                     ", \"verified\": " + (row.timings.verified ? "true" : "false") + "}";
         } else {
@@ -184,7 +180,22 @@ int run(const Options& options) {
     }
 
     printTable(rows);
-    writeResults(options.output, toJson(options, info, rows));
+    // The compute roofline beside the copy one: what a convolution's arithmetic meets.
+    std::printf("[bandwidth] compute: vec4 multiply-adds ... ");
+    std::fflush(stdout);
+    const FmaTimings fma = runFmaProbe(device, options.warmup, options.runs);
+    const Stats fmaMs = summarize(fma.ms);
+    const double gflops = double(fma.flops) / (fmaMs.median * 1e6);
+    std::printf("%.2f GFLOP/s (median %.3f ms, min %.3f, max %.3f, %.3g flops per run; %s)%s\n", gflops, fmaMs.median,
+                fmaMs.min, fmaMs.max, double(fma.flops), fma.timer.c_str(), fma.verified ? "" : " RESULT MISMATCH");
+    allVerified = allVerified && fma.verified;
+    std::string json = toJson(options, info, rows);
+    json.insert(json.rfind("\n}"), ",\n  \"compute\": {\"kernel\": \"vec4 fma\", \"flops_per_run\": " +
+                                       std::to_string(fma.flops) + ", \"median_ms\": " + jsonNumber(fmaMs.median) +
+                                       ", \"min_ms\": " + jsonNumber(fmaMs.min) + ", \"max_ms\": " +
+                                       jsonNumber(fmaMs.max) + ", \"gflops\": " + jsonNumber(gflops) +
+                                       ", \"verified\": " + (fma.verified ? "true" : "false") + "}");
+    writeResults(options.output, json);
     std::printf("[bandwidth] wrote %s\n", options.output.c_str());
     if (!allVerified) {
         std::fprintf(stderr, "hush-bench-bandwidth: a copy did not reproduce its source; figures are suspect\n");

@@ -20,6 +20,17 @@ Stats summarize(std::vector<double> samples) {
 
 std::string jsonString(std::string_view text) { return core::Json(std::string(text)).dump(); }
 
+std::string jsonNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+std::string statsJson(const Stats& s) {
+    return "{\"median\": " + jsonNumber(s.median) + ", \"min\": " + jsonNumber(s.min) + ", \"max\": " +
+           jsonNumber(s.max) + "}";
+}
+
 std::string resultsHead(const core::RunEnvironment& environment) {
     return "{\n  \"environment\": " + core::toJson(environment).dump() + ",\n";
 }

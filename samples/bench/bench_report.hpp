@@ -26,6 +26,10 @@ Stats summarize(std::vector<double> samples);
 
 // `text` as a JSON string literal, quotes included.
 std::string jsonString(std::string_view text);
+// A number with %.6g: enough digits for timings, no trailing noise.
+std::string jsonNumber(double value);
+// {"median": .., "min": .., "max": ..}
+std::string statsJson(const Stats& s);
 
 // The head of a results file: "{\n  \"environment\": {...},\n" (the caller adds
 // its own fields and the closing brace).

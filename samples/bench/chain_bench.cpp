@@ -141,8 +141,16 @@ int run(const Options& options) {
 
     std::vector<Roofline> rooflines;
     std::vector<TimingResult> timings;
+    ComputeRoofline compute;
     bool suspect = false;
     if (options.timing) {
+        if (std::any_of(options.chains.begin(), options.chains.end(), countsArithmetic)) {
+            std::printf("[chains] compute roofline (multiply-adds) ... ");
+            std::fflush(stdout);
+            compute = measureComputeRoofline(device, options.probeRuns);
+            std::printf("%.2f GFLOP/s\n", compute.gflops);
+            suspect = suspect || !compute.verified;
+        }
         for (const Extent2D size : options.sizes) {
             std::printf("[chains] roofline at %ux%u ... ", size.width, size.height);
             std::fflush(stdout);
@@ -160,7 +168,7 @@ int run(const Options& options) {
                 std::printf("[chains] timing %s at %ux%u: %u + %u frames ... ", chain.c_str(), size.width,
                             size.height, options.warmup, options.frames);
                 std::fflush(stdout);
-                timings.push_back(measureChainTiming(device, chain, frame, rooflines[s], options));
+                timings.push_back(measureChainTiming(device, chain, frame, rooflines[s], compute, options));
                 std::printf("%.2f ms per frame\n", timings.back().totalGpuMs.median);
                 suspect = suspect || timings.back().nonFiniteOutput != 0;
             }
@@ -171,17 +179,19 @@ int run(const Options& options) {
 
     if (options.timing) {
         printRooflines(rooflines);
+        printComputeRoofline(compute);
         for (const auto& t : timings)
             for (size_t s = 0; s < options.sizes.size(); ++s)
                 if (options.sizes[s] == t.size) {
                     printTiming(t, rooflines[s]);
+                    printArithmetic(t, compute);
                     printPaperShares(t);
                 }
         printMemory(timings);
     }
     if (options.quality) printQuality(quality, options);
     writeResults(options.output,
-                        toJson(options, info, instance.validationEnabled(), rooflines, timings, quality));
+                        toJson(options, info, instance.validationEnabled(), rooflines, compute, timings, quality));
     std::printf("\n[chains] wrote %s\n", options.output.c_str());
     if (suspect) {
         std::fprintf(stderr, "hush-bench-chains: a roofline copy did not verify or a chain produced non-finite "

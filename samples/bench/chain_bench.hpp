@@ -51,6 +51,16 @@ struct Roofline {
     double otherCpuShare = -1.0;   // as TimingResult's
 };
 
+// The device's multiply-add throughput (fma_probe.hpp), measured once per run when a
+// chain does arithmetic the bench counts (the rdae network's convolutions).
+struct ComputeRoofline {
+    bool measured = false;
+    Stats ms;
+    double gflops = 0.0;   // 2 flops per multiply-add, / median time
+    std::string timer;
+    bool verified = false;
+};
+
 struct PassRow {
     std::string name;
     Stats gpuMs;
@@ -59,6 +69,10 @@ struct PassRow {
     uint64_t bytesRead = 0, bytesWritten = 0;
     double gbps = 0.0;       // (bytesRead + bytesWritten) / median ms
     double ofRoofline = 0.0; // gbps / the roofline's gbps at the same size
+    // Counted arithmetic (a convolution's 9 x inputs x outputs per pixel of its level).
+    double multiplyAdds = 0.0;
+    double gflops = 0.0;              // 2 x multiplyAdds / median ms
+    double ofComputeRoofline = 0.0;   // gflops / the compute roofline's
 };
 
 struct TimingResult {
@@ -71,6 +85,9 @@ struct TimingResult {
     double sumOfPassMedians = 0.0;
     uint64_t bytes = 0;            // over all passes
     double gbps = 0.0, ofRoofline = 0.0;   // bytes / median total
+    double multiplyAdds = 0.0;             // counted, over all passes
+    double multiplyAddsPerPixel = 0.0;     // of the frame (the padded frame's work / its pixels)
+    double gflops = 0.0, ofComputeRoofline = 0.0;   // over the whole frame's median
     size_t barriersPerFrame = 0;
     MemoryReport aliased, unaliased;   // the graph compiled with aliasing on / off
     // Device memory the ChainRunner allocated (its input textures and the graph).
@@ -102,21 +119,28 @@ std::vector<tracer::Channel> denoiserChannels();
 // Frame 0 of the cornell box's camera path at 1 spp, with denoiserChannels().
 tracer::Frame renderTimingFrame(Extent2D size);
 Roofline measureRoofline(const rhi::Device& device, Extent2D size, uint32_t runs);
+ComputeRoofline measureComputeRoofline(const rhi::Device& device, uint32_t runs);
+// Whether the chain has arithmetic the bench counts (then the compute roofline is measured).
+bool countsArithmetic(const std::string& chain);
 TimingResult measureChainTiming(const rhi::Device& device, const std::string& chain, const tracer::Frame& frame,
-                                const Roofline& roofline, const Options& options);
+                                const Roofline& roofline, const ComputeRoofline& compute, const Options& options);
 
 // chain_bench_quality.cpp: every scene of the options (progress on stdout).
 std::vector<QualityRow> measureQuality(const rhi::Device& device, const Options& options);
 
 // chain_bench_report.cpp
 void printRooflines(const std::vector<Roofline>& rooflines);
+void printComputeRoofline(const ComputeRoofline& compute);
 void printTiming(const TimingResult& result, const Roofline& roofline);
+// Per-pass arithmetic (multiply-adds, GFLOP/s, share of the compute roofline), for
+// chains with counted arithmetic.
+void printArithmetic(const TimingResult& result, const ComputeRoofline& compute);
 // The paper's per-stage times beside ours, for a chain whose paper gives them (Mara: Table 1).
 void printPaperShares(const TimingResult& result);
 void printMemory(const std::vector<TimingResult>& results);
 void printQuality(const std::vector<QualityRow>& rows, const Options& options);
 std::string toJson(const Options& options, const AdapterInfo& adapter, bool validation,
-                   const std::vector<Roofline>& rooflines, const std::vector<TimingResult>& timings,
-                   const std::vector<QualityRow>& quality);
+                   const std::vector<Roofline>& rooflines, const ComputeRoofline& compute,
+                   const std::vector<TimingResult>& timings, const std::vector<QualityRow>& quality);
 
 } // namespace hush::bench::chain_bench

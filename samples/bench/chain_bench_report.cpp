@@ -24,6 +24,27 @@ void printRooflines(const std::vector<Roofline>& rooflines) {
                     100.0 * r.otherCpuShare);
 }
 
+void printComputeRoofline(const ComputeRoofline& c) {
+    if (!c.measured) return;
+    std::printf("\ncompute roofline: vec4 multiply-adds, 8 independent chains per invocation (bench/fma.comp): "
+                "%.2f GFLOP/s (median %.3f ms, min %.3f, max %.3f; %s)%s\n",
+                c.gflops, c.ms.median, c.ms.min, c.ms.max, c.timer.c_str(), c.verified ? "" : " RESULT MISMATCH");
+}
+
+void printArithmetic(const TimingResult& t, const ComputeRoofline& compute) {
+    if (t.multiplyAdds <= 0.0) return;
+    std::printf("\n%s at %s, arithmetic: %.0f multiply-adds per pixel, %.2f G per frame; %.2f GFLOP/s over the "
+                "frame, %.0f %% of the compute roofline (%.2f GFLOP/s)\n\n",
+                t.chain.c_str(), sizeText(t.size).c_str(), t.multiplyAddsPerPixel, t.multiplyAdds * 1e-9, t.gflops,
+                100.0 * t.ofComputeRoofline, compute.gflops);
+    std::printf("| layer | median ms | G multiply-adds | GFLOP/s | of compute roofline |\n"
+                "| --- | ---: | ---: | ---: | ---: |\n");
+    for (const auto& p : t.passes)
+        if (p.multiplyAdds > 0.0)
+            std::printf("| %s | %.3f | %.3f | %.2f | %.0f %% |\n", p.name.c_str(), p.gpuMs.median, p.multiplyAdds * 1e-9,
+                        p.gflops, 100.0 * p.ofComputeRoofline);
+}
+
 void printTiming(const TimingResult& t, const Roofline& roofline) {
     std::printf("\n%s at %s: %u frames, GPU %.2f ms per frame (median; min %.2f, max %.2f), CPU record %.3f ms, "
                 "%zu barriers per frame; roofline %.2f GB/s; other processes used %.0f %% of the host's CPU time\n\n",
@@ -95,8 +116,8 @@ void printQuality(const std::vector<QualityRow>& rows, const Options& o) {
 }
 
 std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation,
-                   const std::vector<Roofline>& rooflines, const std::vector<TimingResult>& timings,
-                   const std::vector<QualityRow>& quality) {
+                   const std::vector<Roofline>& rooflines, const ComputeRoofline& compute,
+                   const std::vector<TimingResult>& timings, const std::vector<QualityRow>& quality) {
     std::string json = resultsHead({.program = "chains", .commandLine = o.commandLine,
                                     .device = adapter.reportFields(), .validation = validation});
     json += "  \"warmup\": " + std::to_string(o.warmup) + ", \"frames\": " + std::to_string(o.frames) +
@@ -111,7 +132,12 @@ std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation
                 jsonString(r.timer) + ", \"verified\": " + (r.verified ? "true" : "false") +
                 ", \"other_processes_cpu_share\": " + jsonNumber(r.otherCpuShare) + "}";
     }
-    json += "\n  ],\n  \"timing\": [";
+    json += "\n  ],\n";
+    if (compute.measured)
+        json += "  \"compute_roofline\": {\"kernel\": \"vec4 fma\", \"ms\": " + statsJson(compute.ms) +
+                ", \"gflops\": " + jsonNumber(compute.gflops) + ", \"timer\": " + jsonString(compute.timer) +
+                ", \"verified\": " + (compute.verified ? "true" : "false") + "},\n";
+    json += "  \"timing\": [";
     for (size_t i = 0; i < timings.size(); ++i) {
         const auto& t = timings[i];
         json += std::string(i ? ",\n" : "\n") + "    {\"chain\": " + jsonString(t.chain) +
@@ -122,6 +148,9 @@ std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation
                 ", \"bytes\": " + std::to_string(t.bytes) + ", \"gbps\": " + jsonNumber(t.gbps) +
                 ", \"of_roofline\": " + jsonNumber(t.ofRoofline) +
                 ", \"barriers_per_frame\": " + std::to_string(t.barriersPerFrame) +
+                ", \"multiply_adds\": " + jsonNumber(t.multiplyAdds) +
+                ", \"multiply_adds_per_pixel\": " + jsonNumber(t.multiplyAddsPerPixel) +
+                ", \"gflops\": " + jsonNumber(t.gflops) + ", \"of_compute_roofline\": " + jsonNumber(t.ofComputeRoofline) +
                 ", \"non_finite_output_values\": " + std::to_string(t.nonFiniteOutput) +
                 ", \"other_processes_cpu_share\": " + jsonNumber(t.otherCpuShare) +
                 ",\n     \"memory\": {\"aliased\": " + memoryJson(t.aliased) +
@@ -133,7 +162,12 @@ std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation
             json += std::string(k ? ",\n" : "\n") + "       {\"name\": " + jsonString(p.name) +
                     ", \"gpu_ms\": " + statsJson(p.gpuMs) + ", \"bytes_read\": " + std::to_string(p.bytesRead) +
                     ", \"bytes_written\": " + std::to_string(p.bytesWritten) + ", \"gbps\": " + jsonNumber(p.gbps) +
-                    ", \"of_roofline\": " + jsonNumber(p.ofRoofline) + "}";
+                    ", \"of_roofline\": " + jsonNumber(p.ofRoofline) +
+                    (p.multiplyAdds > 0.0 ? ", \"multiply_adds\": " + jsonNumber(p.multiplyAdds) + ", \"gflops\": " +
+                                                jsonNumber(p.gflops) + ", \"of_compute_roofline\": " +
+                                                jsonNumber(p.ofComputeRoofline)
+                                          : std::string()) +
+                    "}";
         }
         json += "]}";
     }

@@ -10,11 +10,13 @@
 
 #include <hush/graph/compile_steps.hpp>
 #include <hush/passes/chain_file.hpp>
+#include <hush/passes/rdae/chain.hpp>
 #include <hush/core/error.hpp>
 #include <hush/tracer/builtin_scenes.hpp>
 #include <hush/tracer/renderer.hpp>
 
 #include "bandwidth_probe.hpp"
+#include "fma_probe.hpp"
 #include "chain_bench.hpp"
 #include "frame_upload.hpp"
 
@@ -63,7 +65,31 @@ uint64_t countNonFinite(const std::vector<float>& values) {
     return n;
 }
 
+// Counted multiply-adds by pass name: the rdae network's convolutions, 9 x inputs x
+// outputs per pixel of their level (of the padded frame).
+std::map<std::string, double> multiplyAddsByPass(const passes::Chain& chain, Extent2D size) {
+    std::map<std::string, double> out;
+    const auto* rdae = dynamic_cast<const passes::RdaeChain*>(&passes::unwrapChain(chain));
+    if (!rdae) return out;
+    const auto a = rdae->architecture();
+    for (const auto& conv : a.convolutions()) {
+        const auto level = passes::rdaeLevelSize(size, conv.level, a.levels);
+        out[rdae->name() + "." + conv.name] =
+            9.0 * (conv.inputA + conv.inputB) * conv.outputs * double(level.width) * level.height;
+    }
+    return out;
+}
+
 } // namespace
+
+bool countsArithmetic(const std::string& chain) { return !multiplyAddsByPass(*passes::makeChain(chain), {64, 64}).empty(); }
+
+ComputeRoofline measureComputeRoofline(const rhi::Device& device, uint32_t runs) {
+    const FmaTimings t = runFmaProbe(device, 3, runs);
+    ComputeRoofline r{.measured = true, .ms = summarize(t.ms), .timer = t.timer, .verified = t.verified};
+    r.gflops = double(t.flops) / (r.ms.median * 1e6);
+    return r;
+}
 
 std::vector<tracer::Channel> denoiserChannels() {
     // Every layer a chain may read (Mara's too; asking for them makes `direct` Mara's
@@ -94,7 +120,7 @@ Roofline measureRoofline(const rhi::Device& device, Extent2D size, uint32_t runs
 }
 
 TimingResult measureChainTiming(const rhi::Device& device, const std::string& chain, const tracer::Frame& frame,
-                                const Roofline& roofline, const Options& options) {
+                                const Roofline& roofline, const ComputeRoofline& compute, const Options& options) {
     const Extent2D size{frame.width, frame.height};
     TimingResult result{.chain = passes::makeChain(chain)->name(), .size = size, .frames = options.frames};
 
@@ -135,6 +161,7 @@ TimingResult measureChainTiming(const rhi::Device& device, const std::string& ch
     result.nonFiniteOutput = countNonFinite(runner.readDisplay()) + countNonFinite(runner.readRadiance());
 
     const auto bytes = bytesByPass(runner.graph().model());
+    const auto work = multiplyAddsByPass(runner.chain(), size);
     for (const auto& name : runner.graph().passOrder()) {
         const auto samples = passMs.find(name);
         if (samples == passMs.end())
@@ -147,12 +174,21 @@ TimingResult measureChainTiming(const rhi::Device& device, const std::string& ch
         }
         row.gbps = gigabytesPerSecond(row.bytesRead + row.bytesWritten, row.gpuMs.median);
         row.ofRoofline = roofline.gbps > 0.0 ? row.gbps / roofline.gbps : 0.0;
+        if (const auto it = work.find(name); it != work.end()) {
+            row.multiplyAdds = it->second;
+            row.gflops = 2.0 * row.multiplyAdds / (row.gpuMs.median * 1e6);
+            row.ofComputeRoofline = compute.gflops > 0.0 ? row.gflops / compute.gflops : 0.0;
+            result.multiplyAdds += row.multiplyAdds;
+        }
         result.sumOfPassMedians += row.gpuMs.median;
         result.bytes += row.bytesRead + row.bytesWritten;
         result.passes.push_back(std::move(row));
     }
     result.gbps = gigabytesPerSecond(result.bytes, result.totalGpuMs.median);
     result.ofRoofline = roofline.gbps > 0.0 ? result.gbps / roofline.gbps : 0.0;
+    result.multiplyAddsPerPixel = result.multiplyAdds / (double(size.width) * size.height);
+    result.gflops = 2.0 * result.multiplyAdds / (result.totalGpuMs.median * 1e6);
+    result.ofComputeRoofline = compute.gflops > 0.0 ? result.gflops / compute.gflops : 0.0;
     return result;
 }
 

@@ -1,6 +1,5 @@
 #pragma once
-// JSON pieces the graph-based benchmarks (hush-bench-graph, hush-bench-chains) share.
-#include <cstdio>
+// The graph's memory report as JSON, for hush-bench-graph and hush-bench-chains.
 #include <string>
 
 #include <hush/graph/render_graph.hpp>
@@ -8,18 +7,6 @@
 #include "bench_report.hpp"
 
 namespace hush::bench {
-
-// %.6g: enough digits for timings, no trailing noise.
-inline std::string jsonNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
-inline std::string statsJson(const Stats& s) {
-    return "{\"median\": " + jsonNumber(s.median) + ", \"min\": " + jsonNumber(s.min) + ", \"max\": " +
-           jsonNumber(s.max) + "}";
-}
 
 inline std::string memoryJson(const graph::MemoryReport& m) {
     return "{\"transient_aliased_bytes\": " + std::to_string(m.transientAliasedBytes) +

@@ -34,6 +34,7 @@ const Command& infoCommand();
 const Command& renderCommand();
 const Command& denoiseCommand();
 const Command& demoCommand();
+const Command& datasetCommand();
 
 // hush::Error (InvalidArgument) for an argument a subcommand does not know.
 [[noreturn]] void unknownArgument(std::string_view command, std::string_view arg);

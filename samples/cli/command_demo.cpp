@@ -16,6 +16,9 @@
 namespace hush::cli {
 namespace {
 
+// Every method hush implements, the baseline first.
+constexpr std::string_view kDemoChains = "eaw,svgf,bmfr,mara,rdae";
+
 struct DemoDefaults {
     static constexpr uint32_t frames = 32, referenceEvery = 8, referenceSpp = 512, size = 256;
 };
@@ -42,7 +45,7 @@ const std::string& usage() {
         "  --frames <n>            default 32\n"
         "  --reference-every <k>   default 8 (frames 7, 15, 23, 31 are scored)\n"
         "  --reference-spp <n>     samples per pixel of each reference (default 512)\n"
-        "  --chain <list>          default: eaw,svgf,bmfr,mara (the strip follows this order)\n"
+        "  --chain <list>          default: " + std::string(kDemoChains) + " (the strip follows this order)\n"
         "  --reuse-frames          denoise the frames already in <out>/frames/ instead of rendering\n"
         "  --threads <n>           rendering threads (default: every core)\n"
         "  --adapter <text>        use the first adapter whose name contains <text>\n";
@@ -50,7 +53,7 @@ const std::string& usage() {
 }
 
 int runDemo(std::span<const std::string_view> args) {
-    std::string sceneName = "cornell", out = "out", chains = "eaw,svgf,bmfr,mara";
+    std::string sceneName = "cornell", out = "out", chains(kDemoChains);
     SequenceRequest sequence;
     sequence.frames = DemoDefaults::frames;
     sequence.referenceEvery = DemoDefaults::referenceEvery;
@@ -101,11 +104,7 @@ int runDemo(std::span<const std::string_view> args) {
     options.outFolder = out;
     options.sideBySide = true;
     options.dumpGraph = (std::filesystem::path(out) / "graph").string();
-    for (size_t start = 0; start <= chains.size();) {
-        const size_t comma = std::min(chains.find(',', start), chains.size());
-        if (comma > start) options.chains.push_back(chains.substr(start, comma - start));
-        start = comma + 1;
-    }
+    options.chains = splitList(chains);
     options.framePaths = tracer::listFrames(sequence.outFolder);
     return runDenoiseJobAndReport(options, request);
 }
@@ -113,7 +112,7 @@ int runDemo(std::span<const std::string_view> args) {
 } // namespace
 
 const Command& demoCommand() {
-    static const Command command{"demo", "the main job: render the default scene, denoise it with EAW, SVGF and BMFR, "
+    static const Command command{"demo", "the main job: render the default scene, denoise it with every method, "
                                          "report time and quality", usage(), runDemo};
     return command;
 }

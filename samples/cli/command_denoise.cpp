@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include <hush/passes/chain_file.hpp>
 #include <hush/core/error.hpp>
+#include <hush/passes/chain_file.hpp>
 #include <hush/rhi/rhi.hpp>
 #include <hush/tracer/frame_io.hpp>
 
@@ -14,6 +14,12 @@
 
 namespace hush::cli {
 namespace {
+
+std::string builtinList() {
+    std::string list;
+    for (const auto& name : passes::builtinChainNames()) list += (list.empty() ? "" : ", ") + name;
+    return list;
+}
 
 const std::string& usage() {
     static const std::string text =
@@ -28,7 +34,7 @@ const std::string& usage() {
         "plus the temporal error between consecutive outputs.\n"
         "\n"
         "options:\n"
-        "  --chain <list>    comma-separated built-in chains (svgf, eaw, bmfr, mara) or chain files\n"
+        "  --chain <list>    comma-separated built-in chains (" + builtinList() + ") or chain files\n"
         "                    (docs/passes/chain-files.md); default: svgf\n"
         "  --in <folder>     the frames\n"
         "  --out <folder>    where outputs go (created if missing)\n"
@@ -111,7 +117,7 @@ int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterR
 }
 
 const Command& denoiseCommand() {
-    static const Command command{"denoise", "denoise frames with chains (svgf, eaw, bmfr, mara, a chain file); report quality",
+    static const Command command{"denoise", "denoise frames with chains (svgf, eaw, bmfr, mara, rdae, a chain file); report quality",
                                  usage(), runDenoise};
     return command;
 }

@@ -17,8 +17,8 @@ namespace hush::cli {
 namespace {
 
 // Every subcommand, in the order `hush --help` lists them.
-std::array<const Command*, 4> commands() {
-    return {&demoCommand(), &denoiseCommand(), &renderCommand(), &infoCommand()};
+std::array<const Command*, 5> commands() {
+    return {&demoCommand(), &denoiseCommand(), &renderCommand(), &datasetCommand(), &infoCommand()};
 }
 
 std::string commandNames() {

@@ -30,22 +30,40 @@ FloatImage makeImage(uint32_t width, uint32_t height, uint32_t channels,
     return image;
 }
 
-rhi::Texture uploadTexture(const FloatImage& image, Format format, const std::string& label) {
+namespace {
+// `image` as the texture's texels: channels expanded to the format's (alpha 1), fp16
+// converted.
+std::vector<std::byte> texelBytes(const FloatImage& image, Format format) {
     const auto& info = rhi::formatInfo(format);
-    REQUIRE(info.channelType == rhi::ChannelType::Float32);
+    REQUIRE((info.channelType == rhi::ChannelType::Float32 || info.channelType == rhi::ChannelType::Float16));
+    std::vector<float> texels(size_t(image.width) * image.height * info.channels, 0.0f);
+    for (size_t i = 0; i < size_t(image.width) * image.height; ++i)
+        for (uint32_t c = 0; c < info.channels; ++c)
+            texels[i * info.channels + c] =
+                c < image.channels ? image.pixels[i * image.channels + c] : (c == 3 ? 1.0f : 0.0f);
+    std::vector<std::byte> bytes;
+    if (info.channelType == rhi::ChannelType::Float16) {
+        std::vector<uint16_t> halves;
+        for (float v : texels) halves.push_back(test::floatToHalf(v));
+        const auto b = test::bytesOf(halves);
+        bytes.assign(b.begin(), b.end());
+    } else {
+        const auto b = test::bytesOf(texels);
+        bytes.assign(b.begin(), b.end());
+    }
+    return bytes;
+}
+} // namespace
+
+rhi::Texture uploadTexture(const FloatImage& image, Format format, const std::string& label) {
     auto texture = test::gpu().device.createTexture(
         {.label = label,
          .size = {image.width, image.height},
          .format = format,
          .usage = rhi::TextureUsage::TextureBinding | rhi::TextureUsage::StorageBinding |
                   rhi::TextureUsage::CopySrc | rhi::TextureUsage::CopyDst});
-    std::vector<float> texels(size_t(image.width) * image.height * info.channels, 0.0f);
-    for (size_t i = 0; i < size_t(image.width) * image.height; ++i)
-        for (uint32_t c = 0; c < info.channels; ++c)
-            texels[i * info.channels + c] =
-                c < image.channels ? image.pixels[i * image.channels + c] : (c == 3 ? 1.0f : 0.0f);
     test::gpu().queue().writeTexture({.texture = texture,
-                                      .data = test::bytesOf(texels),
+                                      .data = texelBytes(image, format),
                                       .before = rhi::ResourceState::Undefined,
                                       .after = rhi::ResourceState::SampledRead});
     return texture;
@@ -99,15 +117,9 @@ TextureHandle NodeHarness::input(const std::string& name, const FloatImage& imag
 void NodeHarness::update(const std::string& name, const FloatImage& image) {
     for (auto& i : imported_) {
         if (i.name != name) continue;
-        const auto& info = rhi::formatInfo(i.texture.format());
-        std::vector<float> texels(size_t(image.width) * image.height * info.channels, 0.0f);
-        for (size_t p = 0; p < size_t(image.width) * image.height; ++p)
-            for (uint32_t c = 0; c < info.channels; ++c)
-                texels[p * info.channels + c] =
-                    c < image.channels ? image.pixels[p * image.channels + c] : (c == 3 ? 1.0f : 0.0f);
         graph.waitIdle();
         test::gpu().queue().writeTexture({.texture = i.texture,
-                                          .data = test::bytesOf(texels),
+                                          .data = texelBytes(image, i.texture.format()),
                                           .before = rhi::ResourceState::SampledRead,
                                           .after = rhi::ResourceState::SampledRead});
         return;

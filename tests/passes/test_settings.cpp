@@ -46,6 +46,7 @@ public:
         out_[std::string(key)] = c.values[0] == v ? c.values[1] : c.values[0];
     }
     void field(std::string_view key, bool& v) { out_[std::string(key)] = !v; }
+    void field(std::string_view key, std::string& v) { out_[std::string(key)] = v + "-other"; }
     template <class E, size_t N> void field(std::string_view key, E& v, const passes::EnumNames<E, N>& names) {
         out_[std::string(key)] = std::string(names[0].second == v ? names[1].first : names[0].first);
     }

@@ -8,21 +8,13 @@
 #include <sstream>
 #include <system_error>
 
+#include <hush/core/read_file.hpp>
 #include <hush/tracer/obj_loader.hpp>
 
 namespace hush::tracer {
 
 FileText readTextFile(const std::string& path) {
-    std::error_code ec;
-    // ifstream happily "opens" a directory and then reads nothing: say what is wrong instead.
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw Error(ErrorKind::NotFound, path + ": no such file (or not a regular file)");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(ErrorKind::NotFound, path + ": cannot open for reading");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw Error(ErrorKind::NotFound, path + ": read error");
-    return FileText{path, std::move(buffer).str()};
+    return FileText{path, core::readFile(path)};
 }
 
 FileReader folderReader(const std::string& folder) {

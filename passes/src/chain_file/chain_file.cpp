@@ -8,9 +8,11 @@
 #include <sstream>
 
 #include <hush/core/error.hpp>
+#include <hush/core/read_file.hpp>
 #include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/eaw/chain.hpp>
 #include <hush/passes/mara/chain.hpp>
+#include <hush/passes/rdae/chain.hpp>
 #include <hush/passes/settings_json.hpp>
 #include <hush/passes/svgf/chain.hpp>
 
@@ -42,7 +44,8 @@ const std::vector<BuiltinChain>& builtinChains() {
     static const std::vector<BuiltinChain> chains{builtin<SvgfChain, SvgfSettings>("svgf"),
                                                   builtin<EawChain, EawChainSettings>("eaw"),
                                                   builtin<BmfrChain, BmfrSettings>("bmfr"),
-                                                  builtin<MaraChain, MaraSettings>("mara")};
+                                                  builtin<MaraChain, MaraSettings>("mara"),
+                                                  builtin<RdaeChain, RdaeSettings>("rdae")};
     return chains;
 }
 
@@ -208,11 +211,7 @@ std::unique_ptr<Chain> parseChainJson(std::string_view text, const std::string& 
 }
 
 std::unique_ptr<Chain> loadChainFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(ErrorKind::NotFound, "chain file '" + path + "' cannot be opened");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseChainJson(text.str(), path);
+    return parseChainJson(core::readFile(path, "chain file"), path);
 }
 
 std::unique_ptr<Chain> makeChain(const std::string& nameOrPath) {

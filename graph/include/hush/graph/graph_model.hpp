@@ -21,9 +21,19 @@ struct SizeSpec {
     Mode mode = Mode::RelativeToOutput;
     rhi::Extent2D extent;   // Absolute
     float scale = 1.0f;     // RelativeToOutput: round(output * scale), at least 1
+    // RelativeToOutput: the output is first rounded up to a multiple of `padTo` (a
+    // network that pools k times runs on a multiple of 2^k), and the scaled extent
+    // is repeated in a grid of tiles (a tensor's channel blocks side by side,
+    // passes/rdae/tensor.hpp).
+    uint32_t padTo = 1;
+    uint32_t tilesX = 1;
+    uint32_t tilesY = 1;
 
     static SizeSpec absolute(uint32_t width, uint32_t height) { return {Mode::Absolute, {width, height}, 1.0f}; }
     static SizeSpec relative(float s = 1.0f) { return {Mode::RelativeToOutput, {}, s}; }
+    static SizeSpec tiled(float s, uint32_t padTo, uint32_t tilesX, uint32_t tilesY) {
+        return {Mode::RelativeToOutput, {}, s, padTo, tilesX, tilesY};
+    }
     rhi::Extent2D resolve(rhi::Extent2D output) const;
     friend bool operator==(const SizeSpec&, const SizeSpec&) = default;
 };

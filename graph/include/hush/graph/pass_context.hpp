@@ -31,11 +31,16 @@ public:
     // was declared for) covering threads.width x threads.height invocations, with its
     // push constants (written by name, rhi/push_constants.hpp) when it has any.
     void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads) {
-        dispatch(pipeline, group, threads, nullptr);
+        dispatch(pipeline, group, threads, 1, nullptr);
     }
     void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads,
                   const rhi::PushConstants& params) {
-        dispatch(pipeline, group, threads, &params);
+        dispatch(pipeline, group, threads, 1, &params);
+    }
+    // The same over `layers` slices in z (e.g. a tensor's channel blocks).
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads, uint32_t layers,
+                  const rhi::PushConstants& params) {
+        dispatch(pipeline, group, threads, layers, &params);
     }
 
     PassContext(const CompiledGraph& graph, rhi::CommandEncoder& encoder, uint32_t parity, bool historyValid,
@@ -44,7 +49,7 @@ public:
           historyFrame_(historyFrame) {}
 
 private:
-    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads,
+    void dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle group, rhi::Extent2D threads, uint32_t layers,
                   const rhi::PushConstants* params);
 
     const CompiledGraph& graph_;

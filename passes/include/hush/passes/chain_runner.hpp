@@ -28,6 +28,8 @@ public:
     // non-finite input pixels replaced, by InputChannel.
     std::vector<float> readDisplay() const;
     std::vector<float> readRadiance() const;
+    // Any rgba32f or rgba16f output of the graph (markOutput), as RGBA floats.
+    std::vector<float> readTexture(graph::TextureHandle texture) const;
     std::array<uint32_t, kInputChannelCount> sanitizedCounts() const;
 
     const Chain& chain() const { return *chain_; }
@@ -36,8 +38,6 @@ public:
     const ChainOutputs& outputs() const { return outputs_; }
 
 private:
-    std::vector<float> readRgba(graph::TextureHandle h) const;
-
     rhi::Device device_;
     std::unique_ptr<Chain> chain_;
     PipelineCache pipelines_;

@@ -17,6 +17,7 @@
 //   field(key, float&, Range)        field(key, uint32_t&, Range)   field(key, int&, Range)
 //   field(key, uint32_t&, Choices<N>)
 //   field(key, bool&)                field(key, Enum&, names)       field(key, std::vector<Enum>&, names, maxItems)
+//   field(key, std::string&)         (a file name; never a push constant)
 //   section(key, Sub&)               (a nested object: describe(v, sub) inside it)
 //   flatten(Sub&)                    (Sub's fields at this level, as if they were this struct's)
 #include <array>

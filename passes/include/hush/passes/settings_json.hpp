@@ -51,6 +51,7 @@ public:
         v->fail("must be " + list);
     }
     void field(std::string_view key, bool& out) { o_.read(key, out); }
+    void field(std::string_view key, std::string& out) { o_.read(key, out); }
     template <class E, size_t N> void field(std::string_view key, E& out, const EnumNames<E, N>& names) {
         if (auto v = o_.get(key)) out = enumFromJson(*v, names);
     }
@@ -81,6 +82,7 @@ public:
     template <class T> void field(std::string_view key, T& v, Range) { out_[std::string(key)] = v; }
     template <size_t N> void field(std::string_view key, uint32_t& v, Choices<N>) { out_[std::string(key)] = v; }
     void field(std::string_view key, bool& v) { out_[std::string(key)] = v; }
+    void field(std::string_view key, std::string& v) { out_[std::string(key)] = v; }
     template <class E, size_t N> void field(std::string_view key, E& v, const EnumNames<E, N>& names) {
         out_[std::string(key)] = nameOf(v, names);
     }

@@ -22,6 +22,7 @@ public:
     template <size_t N> void field(std::string_view key, uint32_t& v, Choices<N>) { write(key, v); }
     void field(std::string_view key, int& v, Range) { write(key, int32_t(v)); }
     void field(std::string_view key, bool& v) { write(key, v); }
+    void field(std::string_view, std::string&) {}   // file names stay on the CPU
     template <class E, size_t N> void field(std::string_view key, E& v, const EnumNames<E, N>&) {
         if constexpr (sizeof(E) == 4 && !std::is_same_v<E, rhi::Format>) write(key, uint32_t(v));
     }

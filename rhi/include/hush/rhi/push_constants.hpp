@@ -57,6 +57,8 @@ public:
     void set(Slot slot, uint32_t value) { write(slot, &value, 1); }
     // Throws hush::Error (BindingMismatch) unless the span has the slot's component count.
     void set(Slot slot, std::span<const float> values) { write(slot, values.data(), uint32_t(values.size())); }
+    void set(Slot slot, std::span<const int32_t> values) { write(slot, values.data(), uint32_t(values.size())); }
+    void set(Slot slot, std::span<const uint32_t> values) { write(slot, values.data(), uint32_t(values.size())); }
 
     // Throws hush::Error (BindingMismatch) naming the first member never written.
     void requireComplete() const;

@@ -1,0 +1,162 @@
+// RdaeChain on tracer sequences: the shipped default weights against the noisy input
+// and EAW on every built-in scene (cornell was held out of training), and, with a
+// small random network (tests/passes/data), the chain's plumbing: the recurrence
+// carries state through the chain and a reset clears it, NaN/Inf never reach an output
+// or a hidden state, odd sizes, and the errors for weights that do not fit.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include <hush/passes/eaw/chain.hpp>
+#include <hush/passes/metrics/metrics_evaluator.hpp>
+#include <hush/passes/rdae/chain.hpp>
+
+#include "chain_test_util.hpp"
+#include "pass_test_util.hpp"
+#include "support/gpu_context.hpp"
+
+using namespace hush;
+using namespace hush::passes_test;
+
+namespace {
+
+struct Score {
+    double rmse = 0.0, ssim = 0.0, temporal = 0.0;
+};
+
+Score score(const std::vector<std::vector<float>>& displays, const std::vector<tracer::Frame>& frames,
+            passes::MetricsEvaluator& metrics) {
+    Score s;
+    int n = 0;
+    for (size_t f = 0; f < frames.size(); ++f) {
+        if (f > 0) s.temporal += metrics.temporalError(displays[f], displays[f - 1]) / double(frames.size() - 1);
+        if (!frames[f].has(tracer::Channel::Reference)) continue;
+        const auto m = metrics.compare(displays[f], tonemappedRgba(frames[f].get(tracer::Channel::Reference)));
+        s.rmse += m.rmse;
+        s.ssim += m.ssim;
+        ++n;
+    }
+    s.rmse /= n;
+    s.ssim /= n;
+    return s;
+}
+
+// A random width-4, 2-level network: the chain's plumbing, whatever the training did.
+passes::RdaeSettings smallNetwork() {
+    passes::RdaeSettings s;
+    s.width = 4;
+    s.levels = 2;
+    s.weights = std::string(HUSH_PASSES_TEST_DATA_DIR) + "/rdae_random_w4_l2.safetensors";
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("rdae (shipped weights) beats the noisy input and eaw on every built-in scene, with less flicker than eaw",
+          "[rdae][rdae-chain]") {
+    test::ValidationScope scope;
+    for (const std::string scene : {"cornell", "room", "glossy", "moving-light", "thin"}) {
+        const auto& frames = sceneSequence(scene, 96);
+        passes::MetricsEvaluator metrics(test::gpu().device, {96, 96});
+        std::vector<std::vector<float>> noisyDisplays;
+        for (const auto& f : frames) noisyDisplays.push_back(tonemappedRgba(f.get(tracer::Channel::Color)));
+        const Score noisy = score(noisyDisplays, frames, metrics);
+        const Score rdae = score(runSequence(std::make_unique<passes::RdaeChain>(), frames), frames, metrics);
+        const Score eaw = score(runSequence(std::make_unique<passes::EawChain>(), frames), frames, metrics);
+        std::printf("rdae quality 96x96 %s%s: RMSE noisy %.4f eaw %.4f rdae %.4f | SSIM noisy %.4f eaw %.4f rdae "
+                    "%.4f | temporal eaw %.5f rdae %.5f\n",
+                    scene.c_str(), scene == "cornell" ? " (held out)" : "", noisy.rmse, eaw.rmse, rdae.rmse,
+                    noisy.ssim, eaw.ssim, rdae.ssim, eaw.temporal, rdae.temporal);
+        INFO(scene);
+        CHECK(rdae.rmse < noisy.rmse);
+        CHECK(rdae.ssim > noisy.ssim);
+        CHECK(rdae.rmse < eaw.rmse);
+        CHECK(rdae.ssim > eaw.ssim);
+        CHECK(rdae.temporal < eaw.temporal);
+    }
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("rdae chain: the hidden state changes the next frame, and a reset clears it", "[rdae][rdae-chain]") {
+    test::ValidationScope scope;
+    const auto& frames = sceneSequence("cornell", 96);
+    auto settings = smallNetwork();
+    settings.back.useTaa = false;   // the network's own state only
+    passes::ChainRunner a(test::gpu().device, std::make_unique<passes::RdaeChain>(settings), {96, 96});
+    passes::ChainRunner b(test::gpu().device, std::make_unique<passes::RdaeChain>(settings), {96, 96});
+    for (size_t f = 0; f < 3; ++f) {
+        uploadFrame(a, frames[f]);
+        a.run();
+    }
+    uploadFrame(b, frames[2]);
+    b.run();                                   // frame 2 as a first frame
+    const auto withHistory = a.readRadiance(), fresh = b.readRadiance();
+    CHECK(relativeL1(withHistory, fresh) > 1e-3);
+    a.resetHistory();
+    uploadFrame(a, frames[2]);
+    a.run();
+    CHECK(relativeL1(a.readRadiance(), fresh) == 0.0);
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("rdae chain: NaN and Inf in every input never reach an output or a hidden state", "[rdae][rdae-chain]") {
+    test::ValidationScope scope;
+    const auto& frames = sceneSequence("glossy", 96);
+    passes::ChainRunner runner(test::gpu().device, std::make_unique<passes::RdaeChain>(smallNetwork()), {96, 96});
+    const auto hidden = markHistorySources(runner.graph());
+    REQUIRE(hidden.size() >= 2);   // the two RCNN blocks (and TAA's history)
+    for (size_t f = 0; f < 4; ++f) {
+        uploadFrame(runner, frames[f], [&](passes::InputChannel, std::vector<float>& pixels, uint32_t components) {
+            for (size_t i = 0; i < pixels.size(); i += 7 * components + 1)
+                pixels[i] = (i / 7) % 2 ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+        });
+        runner.run();
+        CHECK(nonFinite(runner.readDisplay()) == 0);
+        CHECK(nonFinite(runner.readRadiance()) == 0);
+        for (const auto h : hidden) CHECK(nonFinite(runner.readTexture(h)) == 0);
+    }
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("rdae chain: 1x1, 37x53 and other sizes off the pooling multiple", "[rdae][rdae-chain]") {
+    test::ValidationScope scope;
+    const auto& source = sceneSequence("cornell", 96);
+    for (const auto size : {rhi::Extent2D{1, 1}, rhi::Extent2D{37, 53}, rhi::Extent2D{65, 3}}) {
+        INFO(size.width << "x" << size.height);
+        passes::ChainRunner runner(test::gpu().device, std::make_unique<passes::RdaeChain>(smallNetwork()), size);
+        for (size_t f = 0; f < 2; ++f) {
+            tracer::Frame frame = source[f];
+            frame.width = size.width;
+            frame.height = size.height;
+            for (auto& [channel, image] : frame.channels) {   // the top-left corner of the 96x96 frame
+                tracer::Image crop(size.width, size.height, image.channels);
+                for (uint32_t y = 0; y < size.height; ++y)
+                    for (uint32_t x = 0; x < size.width; ++x)
+                        std::copy_n(image.at(x, y), image.channels, crop.at(x, y));
+                image = crop;
+            }
+            uploadFrame(runner, frame);
+            runner.run();
+            const auto display = runner.readDisplay();
+            CHECK(display.size() == size_t(size.width) * size.height * 4);
+            CHECK(nonFinite(display) == 0);
+        }
+    }
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("rdae chain: weights that do not fit name the file and what is wrong", "[rdae][rdae-chain]") {
+    auto wrongWidth = smallNetwork();
+    wrongWidth.width = 8;   // the file holds a width-4 network
+    CHECK_THROWS_WITH(passes::ChainRunner(test::gpu().device, std::make_unique<passes::RdaeChain>(wrongWidth), {8, 8}),
+                      Catch::Contains("rdae_random_w4_l2.safetensors") && Catch::Contains("'width' is 4"));
+    passes::RdaeSettings unknown;
+    unknown.width = 24;
+    CHECK_THROWS_WITH(passes::ChainRunner(test::gpu().device, std::make_unique<passes::RdaeChain>(unknown), {8, 8}),
+                      Catch::Contains("no built-in weights for width 24"));
+    auto missing = smallNetwork();
+    missing.weights = "/nonexistent/rdae.safetensors";
+    CHECK_THROWS_WITH(passes::ChainRunner(test::gpu().device, std::make_unique<passes::RdaeChain>(missing), {8, 8}),
+                      Catch::Contains("/nonexistent/rdae.safetensors") && Catch::Contains("no such file"));
+}

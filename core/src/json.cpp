@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <vector>
 
 namespace hush::core {
 
@@ -36,6 +38,45 @@ std::string stripPrefix(const std::string& message) {
 
 std::string singleQuoted(std::string_view s) { return "'" + printable(s) + "'"; }
 
+// nlohmann keeps the last of two equal keys; a file that says a thing twice is
+// ambiguous (which one did the user mean?), so it is an error. The parser callback
+// sees each key as it is read; every open object is a frame on a stack.
+class DuplicateKeyCheck {
+public:
+    explicit DuplicateKeyCheck(const std::string& source) : source_(source) {}
+
+    bool operator()(int, Json::parse_event_t event, Json& parsed) {
+        if (event == Json::parse_event_t::object_start) {
+            // An object in an array is named after the array's key: close enough to find it.
+            objects_.push_back({objects_.empty() ? "" : jsonChildPath(objects_.back().path, objects_.back().lastKey)});
+        } else if (event == Json::parse_event_t::object_end) {
+            objects_.pop_back();
+        } else if (event == Json::parse_event_t::key) {
+            onKey(parsed.get<std::string>());
+        }
+        return true;
+    }
+
+private:
+    struct Frame {
+        std::string path;
+        std::set<std::string> keys;
+        std::string lastKey;
+    };
+
+    void onKey(const std::string& key) {
+        Frame& object = objects_.back();
+        if (!object.keys.insert(key).second) {
+            throw Error(ErrorKind::InvalidArgument, source_ + ": " + (object.path.empty() ? "" : object.path + ": ") +
+                                                        "key " + singleQuoted(key) + " appears twice in one object");
+        }
+        object.lastKey = key;
+    }
+
+    const std::string& source_;
+    std::vector<Frame> objects_;
+};
+
 } // namespace
 
 TextPosition positionOf(std::string_view text, std::size_t offset) {
@@ -50,7 +91,8 @@ TextPosition positionOf(std::string_view text, std::size_t offset) {
 
 Json parseJson(std::string_view text, const std::string& source) {
     try {
-        return Json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+        return Json::parse(text.begin(), text.end(), DuplicateKeyCheck(source), /*allow_exceptions=*/true,
+                           /*ignore_comments=*/true);
     } catch (const Json::parse_error& e) {
         // e.byte counts from 1 and names the last byte read: the one that broke the syntax.
         std::string where = source;

@@ -31,6 +31,16 @@ std::string utcTimestamp() {
     return text;
 }
 
+uint64_t availableHostMemory() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    uint64_t kib = 0;
+    std::string unit;
+    while (meminfo >> key >> kib >> unit)
+        if (key == "MemAvailable:") return kib * 1024;
+    return 0;
+}
+
 CpuTimes sampleCpuTimes() {
     CpuTimes t;
     std::ifstream stat("/proc/stat");

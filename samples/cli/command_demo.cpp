@@ -10,6 +10,7 @@
 
 #include "command.hpp"
 #include "denoise_job.hpp"
+#include "output_folder.hpp"
 #include "render_sequence.hpp"
 #include "scene_argument.hpp"
 
@@ -47,6 +48,7 @@ const std::string& usage() {
         "  --reference-spp <n>     samples per pixel of each reference (default 512)\n"
         "  --chain <list>          default: " + std::string(kDemoChains) + " (the strip follows this order)\n"
         "  --reuse-frames          denoise the frames already in <out>/frames/ instead of rendering\n"
+        "  --overwrite             write into an <out> that holds files no hush run wrote\n"
         "  --threads <n>           rendering threads (default: every core)\n"
         "  --adapter <text>        use the first adapter whose name contains <text>\n";
     return text;
@@ -67,7 +69,7 @@ int runDemo(std::span<const std::string_view> args) {
     for (const auto channel : tracer::kAllChannels)
         if (channel != tracer::Channel::Reference) settings.channels.push_back(channel);
     rhi::AdapterRequest request;
-    bool reuse = false;
+    bool reuse = false, overwrite = false;
     for (size_t i = 0; i < args.size(); ++i) {
         std::string v;
         if (takeOption(args, i, "--out", v)) out = v;
@@ -84,11 +86,13 @@ int runDemo(std::span<const std::string_view> args) {
         else if (takeOption(args, i, "--threads", v)) settings.threads = parseCount(v, "--threads", 1, 1024);
         else if (takeOption(args, i, "--adapter", v)) request.nameContains = v, request.nameFromEnvironment = false;
         else if (args[i] == "--reuse-frames") reuse = true;
+        else if (args[i] == "--overwrite") overwrite = true;
         else unknownArgument("demo", args[i]);
     }
     // Score the last frame of each group, where the temporal filters have history.
     sequence.referenceOffset = sequence.referenceEvery - 1;
-    sequence.outFolder = (std::filesystem::path(out) / "frames").string();
+    OutputFolder folder(out, "demo", overwrite);
+    sequence.outFolder = (folder.path() / "frames").string();
     std::filesystem::create_directories(sequence.outFolder);
     tracer::setFrameIoThreadCount(std::max(1u, std::thread::hardware_concurrency()));
 
@@ -103,10 +107,12 @@ int runDemo(std::span<const std::string_view> args) {
     DenoiseJobOptions options;
     options.outFolder = out;
     options.sideBySide = true;
-    options.dumpGraph = (std::filesystem::path(out) / "graph").string();
+    options.dumpGraph = true;
     options.chains = splitList(chains);
     options.framePaths = tracer::listFrames(sequence.outFolder);
-    return runDenoiseJobAndReport(options, request);
+    for (const auto& frame : options.framePaths)   // inputs this run made (or reuses): not stale
+        folder.keep(std::filesystem::path("frames") / std::filesystem::path(frame).filename());
+    return runDenoiseJobAndReport(options, request, &folder);
 }
 
 } // namespace

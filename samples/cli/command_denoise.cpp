@@ -2,6 +2,7 @@
 // quality table and report.json.
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <hush/core/error.hpp>
 #include <hush/passes/chain_file.hpp>
@@ -10,6 +11,7 @@
 
 #include "command.hpp"
 #include "denoise_job.hpp"
+#include "output_folder.hpp"
 #include "scene_argument.hpp"
 
 namespace hush::cli {
@@ -24,7 +26,8 @@ std::string builtinList() {
 const std::string& usage() {
     static const std::string text =
         "usage: hush denoise --in <folder> --out <folder> [--chain <list>] [--first <i>] [--frames <n>]\n"
-        "                    [--no-exr] [--no-png] [--side-by-side] [--dump-graph] [--adapter <text>]\n"
+        "                    [--no-exr] [--no-png] [--side-by-side] [--dump-graph] [--overwrite]\n"
+        "                    [--adapter <text>]\n"
         "\n"
         "Runs denoising chains over the frames of <folder> (docs/frame-format.md), in index\n"
         "order. Writes <out>/<chain>/frame_<i>.exr (filtered radiance, layer 'color') and .png\n"
@@ -37,7 +40,9 @@ const std::string& usage() {
         "  --chain <list>    comma-separated built-in chains (" + builtinList() + ") or chain files\n"
         "                    (docs/passes/chain-files.md); default: svgf\n"
         "  --in <folder>     the frames\n"
-        "  --out <folder>    where outputs go (created if missing)\n"
+        "  --out <folder>    where outputs go: a new or empty folder, or an earlier hush run's\n"
+        "                    (its stale outputs are removed; docs/reliability.md)\n"
+        "  --overwrite       write into a folder that holds other files too\n"
         "  --first <i>       skip frames before index i\n"
         "  --frames <n>      at most n frames\n"
         "  --no-exr, --no-png  skip writing those outputs\n"
@@ -48,17 +53,6 @@ const std::string& usage() {
         "node types for chain files:\n";
     static const std::string full = text + passes::describeChainNodes();
     return full;
-}
-
-std::vector<std::string> splitList(const std::string& list) {
-    std::vector<std::string> items;
-    size_t start = 0;
-    while (start <= list.size()) {
-        const size_t comma = std::min(list.find(',', start), list.size());
-        if (comma > start) items.push_back(list.substr(start, comma - start));
-        start = comma + 1;
-    }
-    return items;
 }
 
 int runDenoise(std::span<const std::string_view> args) {
@@ -79,6 +73,7 @@ int runDenoise(std::span<const std::string_view> args) {
         else if (args[i] == "--no-png") options.writePng = false;
         else if (args[i] == "--side-by-side") options.sideBySide = true;
         else if (args[i] == "--dump-graph") dump = true;
+        else if (args[i] == "--overwrite") options.overwrite = true;
         else unknownArgument("denoise", args[i]);
     }
     if (in.empty()) throw Error(ErrorKind::InvalidArgument, "hush denoise needs --in <folder of frames>");
@@ -92,14 +87,18 @@ int runDenoise(std::span<const std::string_view> args) {
     }
     if (options.framePaths.empty())
         throw Error(ErrorKind::NotFound, "'" + in + "' holds no frame with index >= " + std::to_string(first));
-    std::filesystem::create_directories(options.outFolder);
-    if (dump) options.dumpGraph = (std::filesystem::path(options.outFolder) / "graph").string();
+    options.dumpGraph = dump;
     return runDenoiseJobAndReport(options, request);
 }
 
 } // namespace
 
-int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterRequest& request) {
+int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterRequest& request, OutputFolder* given) {
+    // Everything a user can get wrong is found before the first frame is processed.
+    std::optional<OutputFolder> own;
+    if (!given) own.emplace(options.outFolder, "denoise", options.overwrite);
+    OutputFolder& out = given ? *given : *own;
+    checkSequence(options);
     auto instance = rhi::Instance::create({});
     auto adapter = instance.requestAdapter(request);
     auto device = adapter.createDevice({.label = "hush denoise"});
@@ -108,12 +107,22 @@ int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterR
     for (size_t i = 0; i < options.chains.size(); ++i) std::printf("%s%s", i ? ", " : "", options.chains[i].c_str());
     std::printf(", on %s\n", adapter.info().name.c_str());
     std::fflush(stdout);
-    const auto result = runDenoiseJob(device, options);
+    const auto result = runDenoiseJob(device, options, out);
     std::fputs(formatReportTables(result).c_str(), stdout);
-    const auto reportPath = (std::filesystem::path(options.outFolder) / "report.json").string();
-    core::writeFileAtomically(reportPath, reportJson(result, adapter.info().name));
-    std::printf("\nwrote %s and the images under %s/\n", reportPath.c_str(), options.outFolder.c_str());
-    return kExitOk;
+    core::writeFileAtomically(out.file("report.json"), reportJson(result, adapter.info().name));
+    out.finish();
+    for (const auto& w : result.warnings) std::fprintf(stderr, "hush: warning: %s\n", w.c_str());
+    std::printf("\nwrote %s and the images under %s/\n", (out.path() / "report.json").string().c_str(),
+                out.path().string().c_str());
+    int code = kExitOk;
+    for (const auto& c : result.chains)
+        if (c.nonFiniteOutputs) {
+            std::fprintf(stderr, "hush: error: chain '%s' produced %llu non-finite output value(s), first on frame %u "
+                                 "(a setting outside what it handles? see report.json)\n",
+                         c.name.c_str(), static_cast<unsigned long long>(c.nonFiniteOutputs), c.nonFiniteFrames.front());
+            code = kExitFailed;
+        }
+    return code;
 }
 
 const Command& denoiseCommand() {

@@ -9,6 +9,7 @@
 #include <hush/tracer/renderer.hpp>
 
 #include "command.hpp"
+#include "output_folder.hpp"
 #include "render_sequence.hpp"
 #include "scene_argument.hpp"
 
@@ -19,7 +20,8 @@ const std::string& usage() {
     static const std::string text =
         "usage: hush render [--scene <scene>] [--frames <n>] [--first <i>] [--size <W>x<H>]\n"
         "                   [--reference-spp <n>] [--reference-every <k>] [--channels <list>]\n"
-        "                   [--bounces <n>] [--seed <n>] [--jitter] [--threads <n>] --out <folder>\n"
+        "                   [--bounces <n>] [--seed <n>] [--jitter] [--threads <n>] [--overwrite]\n"
+        "                   --out <folder>\n"
         "\n"
         "Renders frames of the scene's camera path with the path tracer and writes each\n"
         "as <folder>/frame_<i>.exr (docs/frame-format.md): a 1-sample noisy estimate, a\n"
@@ -40,13 +42,16 @@ const std::string& usage() {
         "  --seed <n>             sampling seed (default 1); same seed, same frames\n"
         "  --jitter               per-frame subpixel jitter of the primary rays (recorded)\n"
         "  --threads <n>          rendering threads (default: every core)\n"
-        "  --out <folder>         where the frames go (created if missing)\n";
+        "  --out <folder>         where the frames go: a new or empty folder, or an earlier hush\n"
+        "                         run's (its stale frames are removed)\n"
+        "  --overwrite            write into a folder that holds other files too\n";
     return text;
 }
 
 int runRender(std::span<const std::string_view> args) {
     std::string sceneName = "cornell", outFolder;
     uint32_t frames = 16, first = 0, referenceEvery = 1;
+    bool overwrite = false;
     tracer::RenderSettings settings;
     settings.channels = {tracer::Channel::Color,  tracer::Channel::Albedo,   tracer::Channel::Normal,
                          tracer::Channel::Position, tracer::Channel::Depth,  tracer::Channel::Motion,
@@ -70,12 +75,13 @@ int runRender(std::span<const std::string_view> args) {
         else if (takeOption(args, i, "--threads", v)) settings.threads = parseCount(v, "--threads", 1, 1024);
         else if (takeOption(args, i, "--out", v)) outFolder = v;
         else if (args[i] == "--jitter") settings.jitter = true;
+        else if (args[i] == "--overwrite") overwrite = true;
         else unknownArgument("render", args[i]);
     }
     if (outFolder.empty()) throw Error(ErrorKind::InvalidArgument, "hush render needs --out <folder>");
     for (auto c : settings.channels)
         if (c == tracer::Channel::Reference) settings.referenceSpp = std::max(settings.referenceSpp, 1u);
-    std::filesystem::create_directories(outFolder);
+    OutputFolder folder(outFolder, "render", overwrite);
     // OpenEXR compresses in parallel only through its process-wide pool.
     tracer::setFrameIoThreadCount(std::max(1u, std::thread::hardware_concurrency()));
 
@@ -91,6 +97,9 @@ int runRender(std::span<const std::string_view> args) {
                               .frames = frames,
                               .referenceEvery = referenceEvery,
                               .outFolder = outFolder});
+    for (uint32_t i = first; i < first + frames; ++i)
+        folder.keep(std::filesystem::path(tracer::framePath(outFolder, i)).filename());
+    folder.finish();
     return kExitOk;
 }
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include <hush/passes/chain_file.hpp>
 #include <hush/passes/common/tonemap.hpp>
@@ -12,6 +13,7 @@
 
 #include "denoise_run.hpp"
 #include "frame_upload.hpp"
+#include "output_folder.hpp"
 #include "png_file.hpp"
 #include "progress.hpp"
 
@@ -55,22 +57,47 @@ std::string frameName(uint32_t index, const char* extension) {
     return name;
 }
 
-void writeOutputs(const DenoiseJobOptions& o, const std::string& chain, const tracer::Frame& source,
-                  const RgbaImage& radiance, const RgbaImage& display) {
-    const auto folder = std::filesystem::path(o.outFolder) / chain;
+void writeOutputs(const DenoiseJobOptions& o, OutputFolder& out, const std::string& chain,
+                  const tracer::Frame& source, const RgbaImage& radiance, const RgbaImage& display) {
+    const std::filesystem::path folder(chain);
     if (o.writeExr) {
-        tracer::Frame out;
-        out.width = source.width, out.height = source.height, out.index = source.index;
-        out.scene = source.scene;
-        out.camera = source.camera, out.previousCamera = source.previousCamera;
-        auto& color = out.add(tracer::Channel::Color);
-        for (size_t i = 0; i < size_t(out.width) * out.height; ++i)
+        tracer::Frame frame;
+        frame.width = source.width, frame.height = source.height, frame.index = source.index;
+        frame.scene = source.scene;
+        frame.camera = source.camera, frame.previousCamera = source.previousCamera;
+        auto& color = frame.add(tracer::Channel::Color);
+        for (size_t i = 0; i < size_t(frame.width) * frame.height; ++i)
             for (size_t c = 0; c < 3; ++c) color.pixels[i * 3 + c] = radiance.rgba[i * 4 + c];
-        tracer::writeFrame(out, (folder / frameName(source.index, "exr")).string());
+        tracer::writeFrame(frame, out.file(folder / frameName(source.index, "exr")).string());
     }
     if (o.writePng)
-        writePng((folder / frameName(source.index, "png")).string(), display.width, display.height,
+        writePng(out.file(folder / frameName(source.index, "png")).string(), display.width, display.height,
                  encodeSrgb8(display));
+}
+
+// frame_<i>.exr -> i (tracer::listFrames lists only such names).
+uint32_t frameIndexOf(const std::string& path) {
+    const auto stem = std::filesystem::path(path).stem().string();
+    return uint32_t(std::stoul(stem.substr(stem.find('_') + 1)));
+}
+
+uint64_t countNonFinite(const std::vector<float>& values) {
+    uint64_t n = 0;
+    for (float v : values) n += std::isfinite(v) ? 0 : 1;
+    return n;
+}
+
+// Metrics degrade, never abort: a reference (or output) without one finite pixel leaves
+// the frame unscored, with a warning, instead of ending the job.
+template <class F> bool scoreOrWarn(DenoiseJobResult& result, const std::string& what, F&& score) {
+    try {
+        score();
+        return true;
+    } catch (const Error& e) {
+        if (e.kind() != ErrorKind::InvalidArgument) throw;
+        result.warnings.push_back(what + " left unscored: " + e.what());
+        return false;
+    }
 }
 
 // Each chain writes <out>/<name>/: a name must be a plain folder name (chain files
@@ -99,7 +126,46 @@ void checkOutputNames(const std::vector<ChainResult>& chains, const std::vector<
 
 } // namespace
 
-DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOptions& o) {
+void checkSequence(const DenoiseJobOptions& o) {
+    if (o.framePaths.empty()) throw Error(ErrorKind::InvalidArgument, "no frames to denoise");
+    std::vector<std::string> problems;
+    const auto first = tracer::readFrameInfo(o.framePaths.front());
+    // The layers every chain reads (emission may be absent: nothing to take out).
+    std::set<tracer::Channel> needed;
+    for (const auto& name : o.chains)
+        for (const auto c : passes::makeChain(name)->inputs())
+            if (c != passes::InputChannel::Emission) needed.insert(frames::layerOf(c));
+    uint32_t previousIndex = 0;
+    for (size_t f = 0; f < o.framePaths.size(); ++f) {
+        tracer::FrameFileInfo info;
+        try {
+            info = tracer::readFrameInfo(o.framePaths[f]);
+        } catch (const Error& e) {
+            problems.push_back(e.what());
+            continue;
+        }
+        const std::string where = o.framePaths[f] + ": ";
+        if (info.width != first.width || info.height != first.height)
+            problems.push_back(where + std::to_string(info.width) + "x" + std::to_string(info.height) +
+                               ", the sequence starts at " + std::to_string(first.width) + "x" +
+                               std::to_string(first.height));
+        for (const auto layer : needed)
+            if (std::find(info.layers.begin(), info.layers.end(), layer) == info.layers.end())
+                problems.push_back(where + "no '" + std::string(tracer::channelInfo(layer).name) +
+                                   "' layer, which a chain reads (hush render --channels all writes every layer)");
+        const uint32_t index = frameIndexOf(o.framePaths[f]);
+        if (f > 0 && index <= previousIndex)
+            problems.push_back(where + "index " + std::to_string(index) + " does not follow " +
+                               std::to_string(previousIndex));
+        previousIndex = index;
+    }
+    if (problems.empty()) return;
+    std::string message = std::to_string(problems.size()) + " problem(s) in the frames, found before any work:";
+    for (const auto& p : problems) message += "\n  " + p;
+    throw Error(ErrorKind::InvalidArgument, message);
+}
+
+DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOptions& o, OutputFolder& out) {
     if (o.framePaths.empty()) throw Error(ErrorKind::InvalidArgument, "no frames to denoise");
     const auto start = std::chrono::steady_clock::now();
     const auto info = tracer::readFrameInfo(o.framePaths.front());
@@ -114,41 +180,63 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
         result.chains.push_back({.name = runs.back()->chain().name()});
     }
     checkOutputNames(result.chains, o.chains);
-    for (auto& c : result.chains) std::filesystem::create_directories(std::filesystem::path(o.outFolder) / c.name);
-    if (o.sideBySide) std::filesystem::create_directories(std::filesystem::path(o.outFolder) / "side_by_side");
-    if (!o.dumpGraph.empty())
-        for (auto& run : runs) run->graph().writeDump(o.dumpGraph + "." + run->chain().name());
+    if (o.dumpGraph)
+        for (auto& run : runs) {
+            const std::string stem = "graph." + run->chain().name();
+            out.file(stem + ".dot");
+            out.file(stem + ".json");
+            run->graph().writeDump((out.path() / stem).string());
+        }
 
     passes::MetricsEvaluator metrics(device, size);
     std::vector<RgbaImage> previous(result.chains.size());
     ProgressLine progress("denoise");
+    uint32_t previousIndex = 0;
     for (size_t f = 0; f < o.framePaths.size(); ++f) {
         const auto frame = tracer::readFrame(o.framePaths[f], {.requireChannels = false,
                                                                .expectedWidth = size.width,
                                                                .expectedHeight = size.height});
+        // A gap in the indices is a cut: no history may carry across it.
+        const bool gap = f > 0 && frame.index != previousIndex + 1;
+        if (gap) {
+            for (auto& run : runs) run->resetHistory();
+            result.warnings.push_back("frames " + std::to_string(previousIndex) + " and " +
+                                      std::to_string(frame.index) + " are not consecutive: histories reset there");
+        }
+        previousIndex = frame.index;
         std::vector<RgbaImage> display(result.chains.size());
         const RgbaImage noisy = noisyRadiance(frame);
         display[0] = tonemapped(noisy);
-        writeOutputs(o, "noisy", frame, noisy, display[0]);
+        writeOutputs(o, out, "noisy", frame, noisy, display[0]);
         for (size_t c = 0; c < runs.size(); ++c) {
             auto denoised = runs[c]->process(frame);
-            result.chains[c + 1].sanitizedPixels += denoised.sanitized;
-            writeOutputs(o, result.chains[c + 1].name, frame, denoised.radiance, denoised.display);
+            auto& chain = result.chains[c + 1];
+            chain.sanitizedPixels += denoised.sanitized;
+            const uint64_t bad = countNonFinite(denoised.radiance.rgba) + countNonFinite(denoised.display.rgba);
+            chain.nonFiniteOutputs += bad;
+            if (bad) chain.nonFiniteFrames.push_back(frame.index);
+            writeOutputs(o, out, chain.name, frame, denoised.radiance, denoised.display);
             display[c + 1] = std::move(denoised.display);
         }
         const bool scored = frame.has(tracer::Channel::Reference);
         RgbaImage reference;
         if (scored) reference = tonemapped(toRgba(frame.get(tracer::Channel::Reference)));
         for (size_t c = 0; c < result.chains.size(); ++c) {
-            if (scored) result.chains[c].scored.push_back({frame.index, metrics.compare(display[c].rgba, reference.rgba)});
-            if (f > 0) result.chains[c].temporalError.push_back(metrics.temporalError(display[c].rgba, previous[c].rgba));
+            auto& chain = result.chains[c];
+            const std::string what = chain.name + " on frame " + std::to_string(frame.index);
+            if (scored)
+                scoreOrWarn(result, what, [&] { chain.scored.push_back({frame.index, metrics.compare(display[c].rgba, reference.rgba)}); });
+            if (f > 0 && !gap)
+                scoreOrWarn(result, what + " (temporal error)", [&] {
+                    chain.temporalError.push_back(metrics.temporalError(display[c].rgba, previous[c].rgba));
+                });
         }
         if (scored && o.sideBySide) {
             std::vector<const RgbaImage*> panels;
             for (const auto& d : display) panels.push_back(&d);
             panels.push_back(&reference);
             const auto strip = cli::sideBySide(panels);
-            writePng((std::filesystem::path(o.outFolder) / "side_by_side" / frameName(frame.index, "png")).string(),
+            writePng(out.file(std::filesystem::path("side_by_side") / frameName(frame.index, "png")).string(),
                      strip.width, strip.height, encodeSrgb8(strip));
         }
         previous = std::move(display);

@@ -20,10 +20,11 @@ struct DenoiseJobOptions {
     std::vector<std::string> chains;     // built-in names or chain files
     std::vector<std::string> framePaths; // in order
     std::string outFolder;
+    bool overwrite = false;              // write into a folder with files of unknown origin
     bool writeExr = true;
     bool writePng = true;
     bool sideBySide = false;             // noisy | chains... | reference, on scored frames
-    std::string dumpGraph;               // path prefix for <chain>.dot/.json; "" = none
+    bool dumpGraph = false;              // <out>/graph.<chain>.dot and .json
 };
 
 struct ScoredFrame {
@@ -39,16 +40,25 @@ struct ChainResult {
     std::vector<ScoredFrame> scored;
     std::vector<double> temporalError;             // frame i vs i-1, i >= 1
     uint64_t sanitizedPixels = 0;
+    uint64_t nonFiniteOutputs = 0;                 // values in radiance and display (an error)
+    std::vector<uint32_t> nonFiniteFrames;
     uint64_t transientBytes = 0, transientUnaliasedBytes = 0, historyBytes = 0;
 };
 
 struct DenoiseJobResult {
     uint32_t width = 0, height = 0, frames = 0;
     std::vector<ChainResult> chains;   // "noisy" first
+    std::vector<std::string> warnings; // frames left unscored, histories reset at gaps
     double seconds = 0.0;
 };
 
-DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOptions& options);
+class OutputFolder;
+
+// Checks every frame (size, layers the chains read, index order) before any work;
+// one hush::Error lists every problem found.
+void checkSequence(const DenoiseJobOptions& options);
+
+DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOptions& options, OutputFolder& out);
 
 // The table printed to stdout, and the JSON report.
 std::string formatReportTables(const DenoiseJobResult& result);
@@ -56,7 +66,11 @@ std::string reportJson(const DenoiseJobResult& result, const std::string& adapte
 
 double median(std::vector<double> values);
 
-// Runs the job on the requested adapter, prints the tables, writes report.json.
-int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterRequest& request);
+// Checks the frames, runs the job on the requested adapter, prints the tables, writes
+// report.json and the folder's manifest. Exit code 1 (kExitFailed) when an output
+// holds a non-finite value. `out` is the job's folder (made by the caller when it
+// writes there too, as hush demo does; else made here from options.outFolder).
+int runDenoiseJobAndReport(const DenoiseJobOptions& options, const rhi::AdapterRequest& request,
+                           OutputFolder* out = nullptr);
 
 } // namespace hush::cli

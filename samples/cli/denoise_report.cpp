@@ -89,10 +89,13 @@ std::string reportJson(const DenoiseJobResult& r, const std::string& adapterName
     j["frames"] = r.frames;
     j["seconds"] = r.seconds;
     j["metricsOn"] = "tonemapped display values (ACES fit), RGB";
+    j["warnings"] = r.warnings;
     for (const auto& c : r.chains) {
         nlohmann::json cj;
         cj["name"] = c.name;
         cj["sanitizedPixels"] = c.sanitizedPixels;
+        cj["nonFiniteOutputs"] = c.nonFiniteOutputs;
+        cj["nonFiniteFrames"] = c.nonFiniteFrames;
         cj["temporalErrorMean"] = mean(c.temporalError);
         cj["temporalError"] = c.temporalError;
         if (!c.scored.empty()) {

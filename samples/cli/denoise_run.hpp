@@ -29,6 +29,7 @@ public:
     // Throws hush::Error naming the frame and channel when a frame lacks a channel
     // the chain reads, or has another size. A frame without 'emission' has none.
     DenoisedFrame process(const tracer::Frame& frame);
+    void resetHistory() { runner_.resetHistory(); }
 
     const passes::Chain& chain() const { return runner_.chain(); }
     const graph::RenderGraph& graph() const { return runner_.graph(); }

@@ -3,11 +3,14 @@
 #include <array>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <new>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <hush/core/atomic_file.hpp>
 #include <hush/core/error.hpp>
 #include <hush/core/run_environment.hpp>
 
@@ -99,12 +102,25 @@ void unknownArgument(std::string_view command, std::string_view arg) {
 } // namespace hush::cli
 
 int main(int argc, char** argv) {
+    hush::core::removeTemporariesOnSignal();   // Ctrl-C leaves no half-written file behind
     std::vector<std::string_view> args(argv + 1, argv + argc);
     try {
         return hush::cli::dispatch(args);
     } catch (const hush::Error& error) {
         std::fflush(stdout);
         std::fprintf(stderr, "hush: error (%s): %s\n", hush::toString(error.kind()), error.what());
+        return hush::cli::kExitError;
+    } catch (const std::filesystem::filesystem_error& error) {
+        // The file system refused (a folder given as a file, permissions, a full disk):
+        // the user's to fix, with the path it names.
+        std::fflush(stdout);
+        std::fprintf(stderr, "hush: error (io): '%s': %s\n", error.path1().string().c_str(),
+                     error.code().message().c_str());
+        return hush::cli::kExitError;
+    } catch (const std::bad_alloc&) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "hush: error (out-of-memory): the host ran out of memory; try a smaller --size or "
+                             "fewer frames\n");
         return hush::cli::kExitError;
     } catch (const std::exception& error) {
         // Not a hush::Error: a bug in hush rather than in the input; say so.

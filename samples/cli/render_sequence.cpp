@@ -3,14 +3,37 @@
 #include <algorithm>
 #include <chrono>
 
+#include <hush/core/error.hpp>
+#include <hush/core/run_environment.hpp>
 #include <hush/tracer/frame_io.hpp>
 
 #include "progress.hpp"
 
 namespace hush::cli {
 
+namespace {
+
+// A frame lives in memory as floats, and once more as the EXR writer's copy: refuse a
+// size that cannot fit before allocating it, saying what it needs.
+void checkHostMemory(const tracer::RenderSettings& settings) {
+    uint64_t components = 0;
+    for (const auto c : settings.channels) components += tracer::channelInfo(c).components;
+    components += tracer::channelInfo(tracer::Channel::Reference).components;
+    const uint64_t bytes = 2 * uint64_t(settings.width) * settings.height * components * sizeof(float);
+    const uint64_t available = core::availableHostMemory();
+    if (available && bytes > available)
+        throw Error(ErrorKind::OutOfMemory,
+                    "a " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " frame with " +
+                        std::to_string(settings.channels.size()) + " layers needs about " +
+                        std::to_string(bytes >> 20) + " MiB of host memory, " + std::to_string(available >> 20) +
+                        " MiB are available; render a smaller --size or fewer --channels");
+}
+
+} // namespace
+
 double renderSequence(const tracer::Renderer& renderer, const SequenceRequest& r) {
     const auto& settings = r.settings;
+    checkHostMemory(settings);
     auto hasReference = [&](uint32_t i) {
         return settings.referenceSpp && (i - r.first) % r.referenceEvery == r.referenceOffset % r.referenceEvery;
     };

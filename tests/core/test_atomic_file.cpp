@@ -1,6 +1,11 @@
 // core/atomic_file: a failed write never leaves half a file, nor a temporary.
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -69,4 +74,26 @@ TEST_CASE("atomic file: a missing folder is NotFound naming it, and nothing is c
         CHECK_THAT(e.what(), Catch::Contains((folder / "no" / "such").string()) && Catch::Contains("does not exist"));
     }
     CHECK(entries(folder) == 0);
+}
+
+TEST_CASE("atomic file: SIGTERM in the middle of a write leaves no temporary and the old file", "[atomic][signal]") {
+    const fs::path folder = freshFolder("signal");
+    const fs::path target = folder / "out.bin";
+    core::writeFileAtomically(target, "old");
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {   // the child: a write that is stopped halfway
+        core::removeTemporariesOnSignal();
+        core::writeAtomically(target, [](const std::string& temporary) {
+            std::ofstream(temporary) << "half";
+            std::raise(SIGTERM);
+        });
+        std::_Exit(0);   // not reached: the signal ends the process
+    }
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == SIGTERM);
+    CHECK(readAll(target) == "old");
+    CHECK(entries(folder) == 1);   // no "out.bin.tmp-<pid>"
 }

@@ -28,6 +28,18 @@ TEST_CASE("json: syntax errors give source:line:column, other failures the sourc
     CHECK(core::parseJson("// note\n{\"a\": /* one */ 1}", "x.json")["a"] == 1);
 }
 
+TEST_CASE("json: a key given twice in one object is an error naming the key and the object", "[json]") {
+    CHECK(errorOf([] { core::parseJson(R"({"base": "svgf", "base": "eaw"})", "c.json"); }) ==
+          "c.json: key 'base' appears twice in one object");
+    CHECK(errorOf([] { core::parseJson(R"({"settings": {"atrous": {"sigmaL": 1, "sigmaL": 2}}})", "c.json"); }) ==
+          "c.json: settings.atrous: key 'sigmaL' appears twice in one object");
+    // Equal keys in different objects, in sibling objects of an array, and after a
+    // nested object closes are fine.
+    const Json ok = core::parseJson(R"({"a": {"x": 1}, "b": {"x": 2}, "list": [{"x": 1}, {"x": 2}], "c": 3})", "c.json");
+    CHECK(ok["b"]["x"] == 2);
+    CHECK(ok["list"][1]["x"] == 2);
+}
+
 TEST_CASE("json: positions count lines and columns from 1", "[json]") {
     const auto p = core::positionOf("ab\ncd\nef", 4);
     CHECK(p.line == 2);

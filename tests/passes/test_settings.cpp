@@ -9,6 +9,8 @@
 #include <hush/passes/bmfr/chain.hpp>
 #include <hush/passes/chain_file.hpp>
 #include <hush/passes/eaw/chain.hpp>
+#include <hush/passes/mara/chain.hpp>
+#include <hush/passes/rdae/chain.hpp>
 #include <hush/passes/settings_json.hpp>
 #include <hush/passes/svgf/chain.hpp>
 
@@ -113,6 +115,14 @@ TEST_CASE("settings: every field of every settings struct is described", "[setti
     CHECK(passes::fieldCount<passes::SvgfSettings>() == describedFields<passes::SvgfSettings>());
     CHECK(passes::fieldCount<passes::EawChainSettings>() == describedFields<passes::EawChainSettings>());
     CHECK(passes::fieldCount<passes::BmfrSettings>() == describedFields<passes::BmfrSettings>());
+    CHECK(passes::fieldCount<passes::MaraTemporalSettings>() == describedFields<passes::MaraTemporalSettings>());
+    CHECK(passes::fieldCount<passes::MaraSparseBilateralSettings>() ==
+          describedFields<passes::MaraSparseBilateralSettings>());
+    CHECK(passes::fieldCount<passes::MaraDisocclusionSettings>() == describedFields<passes::MaraDisocclusionSettings>());
+    CHECK(passes::fieldCount<passes::MaraGlossyBilateralSettings>() ==
+          describedFields<passes::MaraGlossyBilateralSettings>());
+    CHECK(passes::fieldCount<passes::MaraSettings>() == describedFields<passes::MaraSettings>());
+    CHECK(passes::fieldCount<passes::RdaeSettings>() == describedFields<passes::RdaeSettings>());
 }
 
 TEST_CASE("settings: the field counter sees a field that describe() leaves out", "[settings]") {
@@ -128,6 +138,8 @@ TEST_CASE("settings: every field of every built-in chain is set from a chain fil
     requireEverySettingReachable<passes::SvgfChain, passes::SvgfSettings>("svgf");
     requireEverySettingReachable<passes::EawChain, passes::EawChainSettings>("eaw");
     requireEverySettingReachable<passes::BmfrChain, passes::BmfrSettings>("bmfr");
+    requireEverySettingReachable<passes::MaraChain, passes::MaraSettings>("mara");
+    requireEverySettingReachable<passes::RdaeChain, passes::RdaeSettings>("rdae");
 }
 
 TEST_CASE("settings: the JSON writer spells every field as a chain file does, and reads back", "[settings]") {

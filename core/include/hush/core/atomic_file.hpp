@@ -19,4 +19,9 @@ void writeAtomically(const std::filesystem::path& target, const std::function<vo
 // Writes `bytes` through writeAtomically.
 void writeFileAtomically(const std::filesystem::path& target, std::string_view bytes);
 
+// Makes SIGINT and SIGTERM remove the temporaries of writes in flight before the
+// process dies of the signal as it would have: a stopped run leaves no
+// "<target>.tmp-<pid>" behind. Call once, early in main().
+void removeTemporariesOnSignal();
+
 } // namespace hush::core

@@ -19,6 +19,9 @@ std::string_view hushVersion();
 std::string hostCpuName();
 // Now, in UTC, as ISO 8601: "2026-12-02T12:34:56Z".
 std::string utcTimestamp();
+// Host memory a new allocation can still get (MemAvailable in /proc/meminfo), in
+// bytes; 0 when unknown. For refusing, before allocating, work that cannot fit.
+uint64_t availableHostMemory();
 
 // CPU time counters (clock ticks) of the whole host and of this process, from
 // /proc/stat and /proc/self/stat; all zero where unavailable.

@@ -46,7 +46,7 @@ template <class V> void describe(V&& v, SvgfAtrousSettings& s) {
     v.field("sigmaN", s.sigmaN, Range{0.0, kUnbounded});
     v.field("sigmaL", s.sigmaL, Range{0.0, kUnbounded});
     v.field("depthEpsilon", s.depthEpsilon, Range{0.0, kUnbounded});
-    v.field("luminanceEpsilon", s.luminanceEpsilon, Range{0.0, kUnbounded});
+    v.field("luminanceEpsilon", s.luminanceEpsilon, Range{1e-30, kUnbounded});  // > 0: Eq. 5 divides by it where the variance is 0
 }
 
 // The a-trous step of `level`: 2^level, capped at 2^16 (a step that large puts

@@ -13,6 +13,7 @@ import argparse
 import csv
 import math
 import os
+import signal
 import sys
 import time
 
@@ -125,8 +126,26 @@ def write_outputs(args, model, optimizer, step, history, run):
     plot(history, os.path.join(args.out, "loss.png"), f"rdae width {model.width}, {model.levels} levels")
 
 
+class StopRequest:
+    """Ctrl-C or SIGTERM ends the run after the current step, with a checkpoint, so
+    that no minutes of training are lost (a second Ctrl-C stops at once)."""
+
+    def __init__(self):
+        self.requested = False
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(sig, self._on_signal)
+
+    def _on_signal(self, sig, frame):
+        if self.requested:
+            raise KeyboardInterrupt
+        self.requested = True
+        print(f"train: {signal.Signals(sig).name}: stopping after this step, with a checkpoint "
+              "(again to stop at once)", flush=True)
+
+
 def train(args):
     run = Run()
+    stop = StopRequest()
     if args.threads:
         torch.set_num_threads(args.threads)
     torch.manual_seed(args.seed)     # the same initial weights on every rank
@@ -176,7 +195,7 @@ def train(args):
                   f"(spatial {terms['spatial']:.4f}, gradient {terms['gradient']:.4f}, temporal {terms['temporal']:.4f})"
                   f"  lr {history[-1]['lr']:.2e}  {per_step:.2f} s/step  "
                   f"left {format_seconds(per_step * (args.steps - step))}", flush=True)
-        out_of_time = args.time_limit and elapsed > args.time_limit * 60
+        out_of_time = (args.time_limit and elapsed > args.time_limit * 60) or stop.requested
         if step % args.checkpoint_every == 0 or step == args.steps or out_of_time:
             write_outputs(args, model, optimizer, step, history, run)
             added = sampler.update(sequence_files(args.data, held_out))
@@ -184,7 +203,8 @@ def train(args):
                 print(f"train: {added} new sequence(s) in {args.data}, {len(sampler.files)} in all", flush=True)
         if out_of_time:
             if run.main:
-                print(f"train: stopped at step {step} after --time-limit {args.time_limit} min", flush=True)
+                why = "on request" if stop.requested else f"after --time-limit {args.time_limit} min"
+                print(f"train: stopped at step {step} {why}", flush=True)
             break
     if args.rank_weights:
         weights_file.export(model, os.path.join(args.out, f"rank{run.rank}.safetensors"), half=False)

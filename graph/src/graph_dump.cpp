@@ -109,7 +109,7 @@ std::string RenderGraph::dumpJson() const {
             const auto& list = c.barriers.beforePass[size_t(pos)];
             for (size_t i = 0; i < list.size(); ++i)
                 o << (i ? ", " : "") << "{\"resource\": \"" << escape(model_.resources[list[i].resource].name)
-                  << "\", \"before\": \"" << rhi::toString(list[i].before) << "\", \"after\": \""
+                  << "\", \"resourceIndex\": " << list[i].resource << ", \"before\": \"" << rhi::toString(list[i].before) << "\", \"after\": \""
                   << rhi::toString(list[i].after) << "\", \"discard\": " << (list[i].discard ? "true" : "false")
                   << ", \"aliased\": " << (list[i].aliased ? "true" : "false") << "}";
         }
@@ -131,6 +131,8 @@ std::string RenderGraph::dumpJson() const {
         if (c.memoryOffset[r] != kNone)
             o << ", \"memoryOffset\": " << c.memoryOffset[r] << ", \"aliasSlot\": " << c.aliasSlot[r]
               << ", \"aliased\": " << (c.aliased[r] ? "true" : "false");
+        if (res.origin == ResourceOrigin::History && res.historySource != kNone)
+            o << ", \"historySource\": " << res.historySource;
         o << ", \"historyPair\": " << (c.historyPair[r] ? "true" : "false") << "}"
           << (r + 1 < model_.resources.size() ? "," : "") << "\n";
     }

@@ -29,6 +29,7 @@ layout(push_constant) uniform Params {
     uint hasB;        // 0: input_b is absent or zero (a hidden state after a reset)
     uint outBlocks;
     uint tilesOut;
+    uint outTileCount;   // tiles of the output grid: those past outBlocks are written with zeros
     uint leaky;       // 1: leaky ReLU, 0: linear (the output layer)
 } params;
 
@@ -47,20 +48,9 @@ vec4 loadInput(ivec2 q, uint block) {
     return inside * texelFetch(input_b, rdaeTexel(c, block - params.blocksA, params.tilesB, params.size), 0);
 }
 
-void main() {
-    // Each invocation computes kPixels horizontally adjacent pixels: every weight it
-    // loads feeds kPixels x 4 multiply-adds (on lavapipe a weight load inside a loop is
-    // a per-lane gather, the kernel's largest cost; docs/passes/rdae.md, "Speed").
-    ivec2 p0 = ivec2(gl_GlobalInvocationID.x * kPixels, gl_GlobalInvocationID.y);
-    if (p0.x >= params.size.x || p0.y >= params.size.y) {
-        return;
-    }
-    // The workgroup's z is its group of output blocks. The weights and biases are
-    // padded to whole groups, so a fixed, unrolled loop reads them all.
-    uint first = gl_WorkGroupID.z * kBlocksPerInvocation;
-    uint stride = (params.blocksA + params.blocksB) * 9u;
-    uint inBlocks = params.blocksA + (params.hasB != 0u ? params.blocksB : 0u);
-    vec4 acc[kPixels][kBlocksPerInvocation];
+// Bias plus the 3x3 convolution of kPixels pixels from p0, for the group of output
+// blocks from `first` (weights and biases are padded to whole groups).
+void accumulate(ivec2 p0, uint first, uint stride, uint inBlocks, inout vec4 acc[kPixels][kBlocksPerInvocation]) {
     for (uint o = 0u; o < kBlocksPerInvocation; ++o) {
         vec4 b = bias.values[first + o];
         for (uint k = 0u; k < kPixels; ++k) {
@@ -83,7 +73,34 @@ void main() {
             }
         }
     }
-    uint count = min(kBlocksPerInvocation, params.outBlocks - first);
+}
+
+void main() {
+    // Each invocation computes kPixels horizontally adjacent pixels: every weight it
+    // loads feeds kPixels x 4 multiply-adds (on lavapipe a weight load inside a loop is
+    // a per-lane gather, the kernel's largest cost; docs/passes/rdae.md, "Speed").
+    ivec2 p0 = ivec2(gl_GlobalInvocationID.x * kPixels, gl_GlobalInvocationID.y);
+    if (p0.x >= params.size.x || p0.y >= params.size.y) {
+        return;
+    }
+    // The workgroup's z is its group of output blocks. The weights and biases are
+    // padded to whole groups, so a fixed, unrolled loop reads them all.
+    uint first = gl_WorkGroupID.z * kBlocksPerInvocation;
+    uint stride = (params.blocksA + params.blocksB) * 9u;
+    uint inBlocks = params.blocksA + (params.hasB != 0u ? params.blocksB : 0u);
+    vec4 acc[kPixels][kBlocksPerInvocation];
+    for (uint o = 0u; o < kBlocksPerInvocation; ++o) {
+        for (uint k = 0u; k < kPixels; ++k) {
+            acc[k][o] = vec4(0.0);
+        }
+    }
+    // A workgroup past the last output block only zeroes the grid's unused tiles, so
+    // that no texel of a tensor (a hidden state is a history) is left uninitialised.
+    // The branch is uniform over the workgroup.
+    if (first < params.outBlocks) {
+        accumulate(p0, first, stride, inBlocks, acc);
+    }
+    uint count = min(kBlocksPerInvocation, params.outTileCount - first);
     for (uint k = 0u; k < kPixels; ++k) {
         ivec2 p = p0 + ivec2(int(k), 0);
         for (uint o = 0u; o < kBlocksPerInvocation; ++o) {

@@ -114,4 +114,27 @@ size_t nonFinite(const std::vector<float>& values) {
     return n;
 }
 
+Score score(const std::vector<std::vector<float>>& displays, const std::vector<tracer::Frame>& frames,
+            passes::MetricsEvaluator& metrics) {
+    Score s;
+    int scored = 0;
+    for (size_t f = 0; f < frames.size(); ++f) {
+        if (f > 0) s.temporal += metrics.temporalError(displays[f], displays[f - 1]) / double(frames.size() - 1);
+        if (!frames[f].has(tracer::Channel::Reference)) continue;
+        const auto m = metrics.compare(displays[f], tonemappedRgba(frames[f].get(tracer::Channel::Reference)));
+        s.rmse += m.rmse;
+        s.ssim += m.ssim;
+        ++scored;
+    }
+    s.rmse /= scored;
+    s.ssim /= scored;
+    return s;
+}
+
+Score noisyScore(const std::vector<tracer::Frame>& frames, passes::MetricsEvaluator& metrics) {
+    std::vector<std::vector<float>> noisy;
+    for (const auto& f : frames) noisy.push_back(tonemappedRgba(f.get(tracer::Channel::Color)));
+    return score(noisy, frames, metrics);
+}
+
 } // namespace hush::passes_test

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <hush/passes/chain_runner.hpp>
+#include <hush/passes/metrics/metrics_evaluator.hpp>
 #include <hush/tracer/frame.hpp>
 
 #include "frame_upload.hpp"
@@ -44,5 +45,15 @@ std::vector<float> tonemappedRgba(const tracer::Image& hdr);
 // Mean |a - b| over RGB, divided by the mean |b| (0 when b is black).
 double relativeL1(const std::vector<float>& a, const std::vector<float>& b);
 size_t nonFinite(const std::vector<float>& values);
+
+// A chain's quality over a sequence: mean RMSE and SSIM of the tonemapped images over
+// the frames with a reference, and the mean temporal error between consecutive frames.
+struct Score {
+    double rmse = 0.0, ssim = 0.0, temporal = 0.0;
+};
+Score score(const std::vector<std::vector<float>>& displays, const std::vector<tracer::Frame>& frames,
+            passes::MetricsEvaluator& metrics);
+// The noisy input's score, tonemapped like the chains' display output.
+Score noisyScore(const std::vector<tracer::Frame>& frames, passes::MetricsEvaluator& metrics);
 
 } // namespace hush::passes_test

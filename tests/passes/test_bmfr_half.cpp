@@ -44,26 +44,6 @@ double rmseRgb(const std::vector<float>& a, const std::vector<float>& b) {
     return n ? std::sqrt(sum / double(n)) : 0.0;
 }
 
-struct Score {
-    double ssim = 0.0, rmse = 0.0;
-};
-
-Score score(const std::vector<std::vector<float>>& displays, const std::vector<tracer::Frame>& frames,
-            passes::MetricsEvaluator& metrics) {
-    Score s;
-    int scored = 0;
-    for (size_t f = 0; f < frames.size(); ++f) {
-        if (!frames[f].has(tracer::Channel::Reference)) continue;
-        const auto m = metrics.compare(displays[f], tonemappedRgba(frames[f].get(tracer::Channel::Reference)));
-        s.ssim += m.ssim;
-        s.rmse += m.rmse;
-        ++scored;
-    }
-    s.ssim /= scored;
-    s.rmse /= scored;
-    return s;
-}
-
 } // namespace
 
 TEST_CASE("bmfr halfPrecision stores the temporaries as rgba16f and is read from a chain file", "[bmfr]") {

@@ -19,39 +19,6 @@
 using namespace hush;
 using namespace hush::passes_test;
 
-namespace {
-
-struct Score {
-    double ssim = 0.0, rmse = 0.0, temporal = 0.0;
-};
-
-Score score(const std::vector<std::vector<float>>& displays, const std::vector<tracer::Frame>& frames,
-            passes::MetricsEvaluator& metrics) {
-    Score s;
-    int scored = 0;
-    for (size_t f = 0; f < frames.size(); ++f) {
-        if (f > 0) s.temporal += metrics.temporalError(displays[f], displays[f - 1]) / double(frames.size() - 1);
-        if (!frames[f].has(tracer::Channel::Reference)) continue;
-        const auto reference = tonemappedRgba(frames[f].get(tracer::Channel::Reference));
-        const auto m = metrics.compare(displays[f], reference);
-        s.ssim += m.ssim;
-        s.rmse += m.rmse;
-        ++scored;
-    }
-    s.ssim /= scored;
-    s.rmse /= scored;
-    return s;
-}
-
-// The noisy input, tonemapped like the chains' display output.
-Score noisyScore(const std::vector<tracer::Frame>& frames, passes::MetricsEvaluator& metrics) {
-    std::vector<std::vector<float>> noisy;
-    for (const auto& f : frames) noisy.push_back(tonemappedRgba(f.get(tracer::Channel::Color)));
-    return score(noisy, frames, metrics);
-}
-
-} // namespace
-
 TEST_CASE("svgf beats the noisy input and eaw on ssim and temporal error", "[chain][quality]") {
     test::ValidationScope scope;
     const auto& frames = cornellSequence();

@@ -18,41 +18,12 @@
 using namespace hush;
 using namespace hush::passes_test;
 
-namespace {
-
-struct Score {
-    double rmse = 0.0, ssim = 0.0;
-};
-
-// Mean RMSE and SSIM over the frames with a reference.
-Score score(const std::vector<std::vector<float>>& displays, const std::vector<tracer::Frame>& frames,
-            passes::MetricsEvaluator& metrics) {
-    Score s;
-    int n = 0;
-    for (size_t f = 0; f < frames.size(); ++f) {
-        if (!frames[f].has(tracer::Channel::Reference)) continue;
-        const auto m = metrics.compare(displays[f], tonemappedRgba(frames[f].get(tracer::Channel::Reference)));
-        s.rmse += m.rmse;
-        s.ssim += m.ssim;
-        ++n;
-    }
-    return {s.rmse / n, s.ssim / n};
-}
-
-std::vector<std::vector<float>> noisyDisplays(const std::vector<tracer::Frame>& frames) {
-    std::vector<std::vector<float>> out;
-    for (const auto& f : frames) out.push_back(tonemappedRgba(f.get(tracer::Channel::Color)));
-    return out;
-}
-
-} // namespace
-
 TEST_CASE("mara beats the noisy input on every built-in scene, and eaw on glossy and room", "[mara][mara-chain]") {
     test::ValidationScope scope;
     for (const std::string scene : {"cornell", "room", "glossy", "moving-light", "thin"}) {
         const auto& frames = sceneSequence(scene, 96);
         passes::MetricsEvaluator metrics(test::gpu().device, {96, 96});
-        const Score noisy = score(noisyDisplays(frames), frames, metrics);
+        const Score noisy = noisyScore(frames, metrics);
         const Score mara = score(runSequence(std::make_unique<passes::MaraChain>(), frames), frames, metrics);
         const Score eaw = score(runSequence(std::make_unique<passes::EawChain>(), frames), frames, metrics);
         std::printf("mara quality 96x96 %s: RMSE noisy %.4f eaw %.4f mara %.4f | SSIM noisy %.4f eaw %.4f mara %.4f\n",

@@ -82,11 +82,14 @@ RdaeTensor addRdaeConvPass(NodeContext& ctx, const std::string& name, const Rdae
     const auto la = a.layout(), lb = rdaeTensorLayout(weights.inputB), lo = rdaeTensorLayout(weights.outputs);
     params.set("blocksA", la.blocks).set("tilesA", la.tilesX);
     params.set("blocksB", weights.inputB ? lb.blocks : 0u).set("tilesB", lb.tilesX);
-    params.set("outBlocks", lo.blocks).set("tilesOut", lo.tilesX);
+    params.set("outBlocks", lo.blocks).set("tilesOut", lo.tilesX).set("outTileCount", lo.tilesX * lo.tilesY);
     params.set("leaky", uint32_t(activation));
     const auto size = params.slot("size", rhi::ScalarType::Int32, 2);
     const auto hasB = params.slot("hasB", rhi::ScalarType::Uint32);
-    const uint32_t level = a.level, levels = format.levels, groups = (lo.blocks + kBlocksPerInvocation - 1) / kBlocksPerInvocation;
+    // Enough groups of output blocks to cover every tile of the grid (conv.glsl zeroes
+    // the tiles past the last block).
+    const uint32_t level = a.level, levels = format.levels,
+                   groups = (lo.tilesX * lo.tilesY + kBlocksPerInvocation - 1) / kBlocksPerInvocation;
     const bool bIsHistory = inputs.bIsHistory, bPresent = b.valid();
     struct Out {
         graph::TextureHandle features;

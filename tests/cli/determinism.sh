@@ -3,9 +3,9 @@
 # outputs and the same metrics (fixed reduction orders; no timing in the images).
 # Usage: determinism.sh <hush> <work folder>
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh"
 hush="$1"; work="$2"
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 "$hush" render --scene glossy --size 32x32 --frames 4 --reference-spp 4 --channels all --out frames > /dev/null
 chains=eaw,svgf,bmfr,mara,rdae

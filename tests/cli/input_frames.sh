@@ -4,21 +4,9 @@
 # too large is refused before allocating (docs/reliability.md).
 # Usage: input_frames.sh <hush> <work folder>
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh"
 hush="$1"; work="$2"
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-expect_exit() {
-    local want="$1" part="$2"; shift 2
-    set +e
-    "$hush" "$@" > stdout.txt 2> stderr.txt
-    local code=$?
-    set -e
-    [[ $code == "$want" ]] || fail "hush $*: exit $code, expected $want: $(cat stderr.txt)"
-    grep -qF -- "$part" stderr.txt || fail "hush $*: message '$(cat stderr.txt)' lacks '$part'"
-    echo "ok: hush $* -> $code: $(head -c 400 stderr.txt)"
-}
-nothing_written() { if [[ -d "$1" ]] && [[ -n "$(ls -A "$1")" ]]; then fail "wrote $(ls -A "$1")"; fi; }
 
 "$hush" render --scene cornell --size 16x16 --frames 4 --reference-spp 4 --out frames > /dev/null
 "$hush" render --scene cornell --size 8x8 --frames 1 --first 2 --reference-spp 0 --out small > /dev/null

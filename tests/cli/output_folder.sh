@@ -5,24 +5,12 @@
 # stale outputs and nothing else (docs/reliability.md).
 # Usage: output_folder.sh <hush> <work folder>
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh"
 hush="$1"; work="$2"
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 "$hush" render --scene cornell --size 16x16 --frames 2 --reference-spp 4 --out frames > /dev/null
 [[ -f frames/hush-run.json ]] || fail "render wrote no manifest"
-
-# expect_exit <code> <message part> <hush arguments...>
-expect_exit() {
-    local want="$1" part="$2"; shift 2
-    set +e
-    "$hush" "$@" > stdout.txt 2> stderr.txt
-    local code=$?
-    set -e
-    [[ $code == "$want" ]] || fail "hush $*: exit $code, expected $want: $(cat stderr.txt)"
-    grep -qF -- "$part" stderr.txt || fail "hush $*: message '$(cat stderr.txt)' lacks '$part'"
-    echo "ok: hush $* -> $code: $(head -c 300 stderr.txt)"
-}
 
 # A rerun with fewer chains removes the first run's outputs of the chain it dropped.
 "$hush" denoise --in frames --out out --chain eaw,svgf --no-png > /dev/null

@@ -3,9 +3,9 @@
 # another chain's or the job's own outputs, are refused before anything is written.
 # Usage: output_names.sh <hush> <work folder>
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh"
 hush="$1"; work="$2"
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 "$hush" render --scene cornell --size 16x16 --frames 2 --out frames > /dev/null
 

@@ -1,74 +1,80 @@
 #!/usr/bin/env bash
-# Fuzzes the scene parsers (OBJ, MTL, JSON scene) with libFuzzer, ASan and UBSan.
-# Not part of the normal build: it needs clang (Debian 12: clang-14 and
-# libclang-rt-14-dev) and builds the harnesses of tests/fuzz/ into build-fuzz/.
+# Fuzzes every reader of user files with libFuzzer, ASan and UBSan: the scene
+# parsers (obj, mtl, scene), the EXR frame reader (exr_frame), the BMFR dataset
+# reader (bmfr_dataset), chain files (chain_file) and the RDAE weights reader
+# (rdae_weights). Not part of the normal build: it needs clang (Debian 12: clang-14
+# and libclang-rt-14-dev) and builds tests/fuzz/ into build-fuzz/ with
+# -DHUSH_BUILD_FUZZERS=ON.
 #
-#   scripts/fuzz.sh [--seconds N] [--update-corpus] [obj|mtl|scene ...]
+#   scripts/fuzz.sh [--seconds N | --runs N] [--update-corpus] [target ...]
 #
-# Each parser runs N seconds (default 90) from its kept corpus in
-# tests/tracer/data/fuzz_corpus/<parser>/, writing new inputs to build-fuzz/corpus/.
-# A crash, hang or sanitizer report stops the run and leaves the input in
-# build-fuzz/artifacts/<parser>/; add it to the kept corpus once fixed, so the
-# Catch2 test "fuzz corpus" replays it in every build.
+# Each target runs N seconds (default 90), or N executions, from its kept corpus
+# (tests/tracer/data/fuzz_corpus/<target>/ or tests/passes/data/fuzz_corpus/<target>/),
+# writing new inputs to build-fuzz/corpus/. A crash, hang or sanitizer report stops
+# the run and leaves the input in build-fuzz/artifacts/<target>/; add it to the kept
+# corpus as regress_<what>, once fixed, so that the Catch2 "fuzz corpus" tests replay
+# it in every build. Each run's final statistics go to build-fuzz/stats/<target>.txt.
 # --update-corpus minimizes (-merge=1) the kept corpus plus what was found and keeps
-# at most 100 of the result per parser, besides the seeds and crash reproducers.
+# at most 100 of the result per target, besides the seeds and crash reproducers.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-seconds=90
+all=(obj mtl scene exr_frame bmfr_dataset chain_file rdae_weights)
+limit=(-max_total_time=90)
 update=0
 max_kept=100
 targets=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
-    --seconds) seconds="$2"; shift 2 ;;
+    --seconds) limit=(-max_total_time="$2"); shift 2 ;;
+    --runs) limit=(-runs="$2"); shift 2 ;;
     --update-corpus) update=1; shift ;;
-    obj|mtl|scene) targets+=("$1"); shift ;;
-    *) echo "usage: $0 [--seconds N] [--update-corpus] [obj|mtl|scene ...]" >&2; exit 2 ;;
+    obj|mtl|scene|exr_frame|bmfr_dataset|chain_file|rdae_weights) targets+=("$1"); shift ;;
+    *) echo "usage: $0 [--seconds N | --runs N] [--update-corpus] [${all[*]}]" >&2; exit 2 ;;
   esac
 done
-[[ ${#targets[@]} -gt 0 ]] || targets=(obj mtl scene)
+[[ ${#targets[@]} -gt 0 ]] || targets=("${all[@]}")
 
-cxx="${CXX:-clang++}"
-if ! "$cxx" --version 2>/dev/null | grep -q clang; then
+if ! "${CXX:-clang++}" --version 2>/dev/null | grep -q clang; then
   echo "fuzz.sh needs clang with libFuzzer: apt-get install -y clang-14 libclang-rt-14-dev (or set CXX)" >&2
   exit 1
 fi
 
 build="$root/build-fuzz"
-mkdir -p "$build/obj"
-flags=(-std=c++20 -g -O1 -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-       -I"$root/tracer/include" -I"$root/tracer/src" -I"$root/rhi/include")
-# The parsers are instrumented for coverage (fuzzer-no-link); each harness links
-# libFuzzer's main (fuzzer).
-sources=(text_parse obj_loader mtl_loader json_fields scene_file scene)
-objects=()
-for s in "${sources[@]}"; do
-  o="$build/obj/$s.o"
-  if [[ ! -f "$o" || "$root/tracer/src/$s.cpp" -nt "$o" || -n "$(find "$root/tracer/src" "$root/tracer/include" -newer "$o" -name '*.hpp' -print -quit)" ]]; then
-    echo "==> compile $s.cpp"
-    "$cxx" "${flags[@]}" -fsanitize=fuzzer-no-link,address,undefined -c "$root/tracer/src/$s.cpp" -o "$o"
-  fi
-  objects+=("$o")
-done
+# Every library is instrumented for coverage (fuzzer-no-link); each harness links
+# libFuzzer's main. All harnesses are built before any runs, so that a header edited
+# during a long run cannot give a harness and a library two layouts of one struct.
+CC="${CC:-clang}" CXX="${CXX:-clang++}" cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DHUSH_BUILD_TESTS=OFF -DHUSH_BUILD_SAMPLES=OFF -DHUSH_BUILD_FUZZERS=ON \
+    -DHUSH_SANITIZE=fuzzer-no-link,address,undefined > /dev/null
+cmake --build "$build" --target "${targets[@]/#/fuzz_}"
 
-# Link every harness before fuzzing any: a header edited during a long run must not
-# give a harness and the parser objects two layouts of the same struct.
-for t in "${targets[@]}"; do
-  echo "==> build fuzz_$t"
-  "$cxx" "${flags[@]}" -fsanitize=fuzzer,address,undefined "$root/tests/fuzz/fuzz_$t.cpp" "${objects[@]}" -o "$build/fuzz_$t"
-done
+kept_corpus() {
+  case "$1" in
+    chain_file|rdae_weights) echo "$root/tests/passes/data/fuzz_corpus/$1" ;;
+    *) echo "$root/tests/tracer/data/fuzz_corpus/$1" ;;
+  esac
+}
 
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 for t in "${targets[@]}"; do
-  kept="$root/tests/tracer/data/fuzz_corpus/$t"
+  kept="$(kept_corpus "$t")"
   work="$build/corpus/$t"
-  mkdir -p "$work" "$build/artifacts/$t" "$kept"
-  echo "==> fuzz $t for ${seconds}s (new inputs in $work)"
+  mkdir -p "$work" "$build/artifacts/$t" "$build/stats" "$kept"
+  echo "==> fuzz $t (${limit[*]}; new inputs in $work)"
   dict=()
   [[ -f "$root/tests/fuzz/$t.dict" ]] && dict=(-dict="$root/tests/fuzz/$t.dict")
-  "$build/fuzz_$t" "$work" "$kept" "${dict[@]}" -max_len=4096 -timeout=5 -rss_limit_mb=2048 \
-      -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/"
+  # Binary formats need room for a whole small file (the seeds are 2-16 KB).
+  max_len=4096
+  [[ $t == exr_frame || $t == bmfr_dataset || $t == rdae_weights ]] && max_len=20000
+  "$build/tests/fuzz/fuzz_$t" "$work" "$kept" "${dict[@]}" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
+      "${limit[@]}" -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" 2>&1 | tee "$build/stats/$t.log" |
+      grep -E "^(#[0-9]+ *(DONE|INITED)|stat::|==[0-9]+==ERROR|SUMMARY)" || true
+  grep -E "^stat::" "$build/stats/$t.log" > "$build/stats/$t.txt" || true
+  if grep -qE "ERROR: (libFuzzer|AddressSanitizer|UndefinedBehaviorSanitizer)|runtime error|deadly signal" "$build/stats/$t.log"; then
+    echo "==> fuzz $t found a problem: see $build/stats/$t.log and $build/artifacts/$t/" >&2
+    exit 1
+  fi
   if [[ $update == 1 ]]; then
     # Minimize what was found plus the kept corpus, then cap it: the kept corpus is
     # a regression test in the repository, not the fuzzer's working set. Hand-written
@@ -77,7 +83,7 @@ for t in "${targets[@]}"; do
     # statements, large ones whole valid files).
     merged="$build/merged/$t"
     rm -rf "$merged" && mkdir -p "$merged"
-    "$build/fuzz_$t" -merge=1 "$merged" "$kept" "$work" 2>&1 | grep -E "MERGE-OUTER: [0-9]+ new files" || true
+    "$build/tests/fuzz/fuzz_$t" -merge=1 -max_len="$max_len" "$merged" "$kept" "$work" 2>&1 | grep -E "MERGE-OUTER: [0-9]+ new files" || true
     find "$kept" -type f ! -name 'seed_*' ! -name 'regress_*' -delete
     (cd "$merged" && ls -S -r | grep -v -E '^(seed|regress)_' || true) |
       awk -v n="$max_kept" '{ f[NR] = $0 } END { k = (NR < n) ? NR : n; for (i = 0; i < k; i++) print f[1 + int(i * NR / k)] }' |

@@ -95,7 +95,10 @@ BindGroup Device::createBindGroup(const BindGroupDesc& desc) const {
     impl->layout = desc.layout.shared();
     impl->label = desc.label;
     for (size_t i = 0; i < resolved.size(); ++i) {
-        const auto& [target, entry, view] = resolved[i];
+        // Named references, not a structured binding: clang 14 cannot capture those.
+        const BindGroupLayoutEntry* target = resolved[i].layout;
+        const BindGroupEntry* entry = resolved[i].entry;
+        const TextureView& view = resolved[i].view;
         const std::string where = "binding " + std::to_string(target->binding) + " ('" + target->name + "')";
         auto expected = [&](const std::string& why) {
             mismatch(where + ": expected " + describe(*target) + ", given " + describeGiven(*entry, view) +

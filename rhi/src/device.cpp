@@ -2,6 +2,7 @@
 // submissions, and device-memory allocation with errors that say what was asked.
 #include <algorithm>
 
+#include "fault_injection_detail.hpp"
 #include "objects.hpp"
 #include "vk_check.hpp"
 
@@ -59,8 +60,10 @@ VkDeviceMemory DeviceImpl::allocate(const VkMemoryRequirements& requirements, Vk
     alloc.allocationSize = requirements.size;
     alloc.memoryTypeIndex = chosen;
     VkDeviceMemory out = VK_NULL_HANDLE;
-    checkVk(vk.vkAllocateMemory(device, &alloc, nullptr, &out),
-            "allocating " + std::to_string(requirements.size) + " bytes for " + what);
+    const VkResult result = takeInjectedFault(InjectedFault::OutOfDeviceMemory)
+                                ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                                : vk.vkAllocateMemory(device, &alloc, nullptr, &out);
+    checkVk(result, "allocating " + std::to_string(requirements.size) + " bytes for " + what);
     allocatedBytes += requirements.size;
     if (chosenFlags) *chosenFlags = memory.memoryTypes[chosen].propertyFlags;
     if (chosenType) *chosenType = chosen;

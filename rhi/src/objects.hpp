@@ -12,9 +12,21 @@
 #include <volk.h>
 
 #include <hush/rhi/device.hpp>
+#include <hush/rhi/live_objects.hpp>
 #include <hush/core/error.hpp>
 
 namespace hush::rhi::detail {
+
+std::atomic<int64_t>& liveCounter(ObjectKind kind);
+
+// A member that counts its object among the live ones of `Kind` (liveObjects()).
+template <ObjectKind Kind>
+struct LiveCount {
+    LiveCount() { liveCounter(Kind).fetch_add(1, std::memory_order_relaxed); }
+    LiveCount(const LiveCount&) : LiveCount() {}
+    LiveCount& operator=(const LiveCount&) { return *this; }
+    ~LiveCount() { liveCounter(Kind).fetch_sub(1, std::memory_order_relaxed); }
+};
 
 using KeepAlive = std::vector<std::shared_ptr<const void>>;
 
@@ -26,6 +38,7 @@ struct AdapterRecord {
 };
 
 struct InstanceImpl {
+    LiveCount<ObjectKind::Instance> live;
     void* loader = nullptr;               // dlopen handle; null for an imported device's loader
     VkInstance instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
@@ -51,6 +64,7 @@ struct InFlight {
 };
 
 struct DeviceImpl {
+    LiveCount<ObjectKind::Device> live;
     std::shared_ptr<InstanceImpl> instance;   // null for an imported device
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
     VkDevice device = VK_NULL_HANDLE;
@@ -70,6 +84,9 @@ struct DeviceImpl {
     SubmissionId lastSubmitted = 0;
     std::vector<InFlight> inFlight;   // oldest first; capacity is kept between frames
     std::atomic<uint64_t> allocatedBytes{0};
+    // Set once a submission or wait reported VK_ERROR_DEVICE_LOST: a lost device
+    // stays lost, so later calls fail the same way without asking the driver.
+    std::atomic<bool> lost{false};
 
     ~DeviceImpl();
 
@@ -86,6 +103,7 @@ struct DeviceImpl {
 };
 
 struct BufferImpl {
+    LiveCount<ObjectKind::Buffer> live;
     std::shared_ptr<DeviceImpl> device;
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
@@ -98,6 +116,7 @@ struct BufferImpl {
 };
 
 struct MemoryBlockImpl {
+    LiveCount<ObjectKind::MemoryBlock> live;
     std::shared_ptr<DeviceImpl> device;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     uint64_t size = 0;
@@ -107,6 +126,7 @@ struct MemoryBlockImpl {
 };
 
 struct TextureImpl {
+    LiveCount<ObjectKind::Texture> live;
     std::shared_ptr<DeviceImpl> device;
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;   // null when placed in a MemoryBlock
@@ -120,6 +140,7 @@ struct TextureImpl {
 };
 
 struct TextureViewImpl {
+    LiveCount<ObjectKind::TextureView> live;
     std::shared_ptr<TextureImpl> texture;
     VkImageView view = VK_NULL_HANDLE;
     uint32_t baseMip = 0;
@@ -129,6 +150,7 @@ struct TextureViewImpl {
 };
 
 struct SamplerImpl {
+    LiveCount<ObjectKind::Sampler> live;
     std::shared_ptr<DeviceImpl> device;
     VkSampler sampler = VK_NULL_HANDLE;
     SamplerDesc desc;
@@ -136,6 +158,7 @@ struct SamplerImpl {
 };
 
 struct ShaderModuleImpl {
+    LiveCount<ObjectKind::ShaderModule> live;
     std::shared_ptr<DeviceImpl> device;
     VkShaderModule module = VK_NULL_HANDLE;
     std::string label;
@@ -144,6 +167,7 @@ struct ShaderModuleImpl {
 };
 
 struct BindGroupLayoutImpl {
+    LiveCount<ObjectKind::BindGroupLayout> live;
     std::shared_ptr<DeviceImpl> device;
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
     std::string label;
@@ -153,6 +177,7 @@ struct BindGroupLayoutImpl {
 };
 
 struct BindGroupImpl {
+    LiveCount<ObjectKind::BindGroup> live;
     std::shared_ptr<DeviceImpl> device;
     std::shared_ptr<BindGroupLayoutImpl> layout;
     VkDescriptorPool pool = VK_NULL_HANDLE;
@@ -163,6 +188,7 @@ struct BindGroupImpl {
 };
 
 struct ComputePipelineImpl {
+    LiveCount<ObjectKind::ComputePipeline> live;
     std::shared_ptr<DeviceImpl> device;
     std::shared_ptr<ShaderModuleImpl> module;
     VkPipeline pipeline = VK_NULL_HANDLE;
@@ -177,6 +203,7 @@ struct ComputePipelineImpl {
 };
 
 struct QuerySetImpl {
+    LiveCount<ObjectKind::QuerySet> live;
     std::shared_ptr<DeviceImpl> device;
     VkQueryPool pool = VK_NULL_HANDLE;
     uint32_t count = 0;
@@ -185,6 +212,7 @@ struct QuerySetImpl {
 };
 
 struct CommandBufferImpl {
+    LiveCount<ObjectKind::CommandBuffer> live;
     std::shared_ptr<DeviceImpl> device;
     VkCommandPool pool = VK_NULL_HANDLE;
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
@@ -197,6 +225,7 @@ struct CommandBufferImpl {
 };
 
 struct CommandEncoderImpl {
+    LiveCount<ObjectKind::CommandEncoder> live;
     std::shared_ptr<DeviceImpl> device;
     VkCommandPool pool = VK_NULL_HANDLE;
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;

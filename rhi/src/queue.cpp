@@ -1,5 +1,6 @@
 // Queue: submissions numbered on a timeline semaphore. A command buffer keeps what
 // it uses alive until its submission completes.
+#include "fault_injection_detail.hpp"
 #include "objects.hpp"
 #include "vk_check.hpp"
 
@@ -44,7 +45,11 @@ SubmissionId Queue::submit(std::span<const CommandBuffer> commands) {
     submit.pCommandBufferInfos = infos;
     submit.signalSemaphoreInfoCount = 1;
     submit.pSignalSemaphoreInfos = &signal;
-    checkVk(device->vk.vkQueueSubmit2(device->queue, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit2");
+    VkResult result = VK_ERROR_DEVICE_LOST;
+    if (!device->lost && !takeInjectedFault(InjectedFault::DeviceLost))
+        result = device->vk.vkQueueSubmit2(device->queue, 1, &submit, VK_NULL_HANDLE);
+    if (result == VK_ERROR_DEVICE_LOST) device->lost = true;
+    checkVk(result, "vkQueueSubmit2");
     device->lastSubmitted = id;
 
     InFlight& flight = device->inFlight.emplace_back();
@@ -67,7 +72,10 @@ void Queue::wait(SubmissionId id) {
     info.semaphoreCount = 1;
     info.pSemaphores = &device->timeline;
     info.pValues = &id;
-    checkVk(device->vk.vkWaitSemaphores(device->device, &info, UINT64_MAX), "waiting for submission");
+    const VkResult result =
+        device->lost ? VK_ERROR_DEVICE_LOST : device->vk.vkWaitSemaphores(device->device, &info, UINT64_MAX);
+    if (result == VK_ERROR_DEVICE_LOST) device->lost = true;
+    checkVk(result, "waiting for submission");
     std::lock_guard lock(device->queueMutex);
     device->retireCompleted();
 }

@@ -2,6 +2,7 @@
 // into messages and exit codes instead of crashes.
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <new>
@@ -13,6 +14,7 @@
 #include <hush/core/atomic_file.hpp>
 #include <hush/core/error.hpp>
 #include <hush/core/run_environment.hpp>
+#include <hush/rhi/fault_injection.hpp>
 
 #include "command.hpp"
 
@@ -52,8 +54,28 @@ void printUsage(std::FILE* out) {
                  "  HUSH_ADAPTER=<text>       use the first adapter whose name contains <text>\n"
                  "  HUSH_VALIDATION=1         enable the Vulkan validation layer (with sync validation)\n"
                  "  HUSH_VULKAN_LOADER=<path> open this Vulkan loader instead of libvulkan.so.1\n"
+                 "  HUSH_INJECT_FAULT=<fault>[:<n>]  for tests: the (n+1)-th device allocation or\n"
+                 "                            submission fails (out-of-device-memory, device-lost)\n"
                  "\n"
                  "exit status: 0 success, 1 a check failed, 2 could not run (the message says why)\n");
+}
+
+// HUSH_INJECT_FAULT: how tests/cli/faults.sh makes the driver fail on demand.
+void injectFaultFromEnvironment() {
+    const char* text = std::getenv("HUSH_INJECT_FAULT");
+    if (!text || !*text) return;
+    const std::string_view spec(text);
+    const auto colon = spec.find(':');
+    uint32_t skip = 0;
+    if (colon != std::string_view::npos) {
+        const std::string count(spec.substr(colon + 1));
+        char* end = nullptr;
+        const unsigned long value = std::strtoul(count.c_str(), &end, 10);
+        if (count.empty() || *end != '\0' || value > 1000000)
+            throw Error(ErrorKind::InvalidArgument, "HUSH_INJECT_FAULT: '" + count + "' is not a count (0 to 1000000)");
+        skip = uint32_t(value);
+    }
+    rhi::injectFault(rhi::parseInjectedFault(spec.substr(0, colon)), skip);
 }
 
 bool isHelp(std::string_view arg) {
@@ -69,6 +91,7 @@ int dispatch(std::span<const std::string_view> args) {
         printUsage(stdout);
         return kExitOk;
     }
+    injectFaultFromEnvironment();
     if (args[0] == "--version") {
         std::printf("hush %s\n", std::string(core::hushVersion()).c_str());
         return kExitOk;

@@ -25,6 +25,7 @@ std::set<std::string> readManifest(const fs::path& folder) {
     core::JsonObject root(json, path.string(), "");
     root.allow("command");
     root.allow("version");
+    root.allow("complete");
     std::set<std::string> files;
     const auto list = root.require("outputs");
     for (size_t i = 0; i < list.arraySize(); ++i) {
@@ -85,20 +86,52 @@ fs::path OutputFolder::file(const fs::path& relative) {
     return full;
 }
 
-void OutputFolder::keep(const fs::path& relative) { written_.insert(relative.lexically_normal().string()); }
+void OutputFolder::keep(const fs::path& relative) { kept_.insert(relative.lexically_normal().string()); }
+
+namespace {
+
+// Removes `relative` and its folder once empty (a chain's folder, e.g.).
+void removeOutput(const fs::path& folder, const std::string& relative) {
+    std::error_code ignored;
+    const fs::path file = folder / relative;
+    fs::remove(file, ignored);
+    if (fs::path dir = file.parent_path(); dir != folder && fs::is_empty(dir, ignored)) fs::remove(dir, ignored);
+}
+
+} // namespace
 
 void OutputFolder::finish() {
-    std::error_code ignored;
-    for (const auto& old : previous_) {
-        if (written_.count(old)) continue;
-        const fs::path stale = folder_ / old;
-        fs::remove(stale, ignored);
-        // Its folder too, once empty (a chain of the earlier run that this one lacks).
-        if (fs::path dir = stale.parent_path(); dir != folder_ && fs::is_empty(dir, ignored)) fs::remove(dir, ignored);
+    std::set<std::string> outputs = written_;
+    outputs.insert(kept_.begin(), kept_.end());
+    for (const auto& old : previous_)
+        if (!outputs.count(old)) removeOutput(folder_, old);
+    writeManifest(outputs, true);
+    finished_ = true;
+}
+
+OutputFolder::~OutputFolder() {
+    if (!finished_) abandon();
+}
+
+void OutputFolder::abandon() noexcept {
+    if (written_.empty()) return;   // failed before writing: the folder is as it was
+    try {
+        std::set<std::string> left = kept_;
+        for (const auto& file : written_)
+            if (!kept_.count(file)) removeOutput(folder_, file);
+        std::error_code ignored;
+        for (const auto& old : previous_)
+            if (!written_.count(old) && fs::exists(folder_ / old, ignored)) left.insert(old);
+        writeManifest(left, false);
+    } catch (...) {
+        // Already failing: the first error is the one the user sees.
     }
+}
+
+void OutputFolder::writeManifest(const std::set<std::string>& outputs, bool complete) const {
     core::Json manifest = {{"command", command_}, {"version", std::string(core::hushVersion())},
-                           {"outputs", core::Json::array()}};
-    for (const auto& f : written_) manifest["outputs"].push_back(f);
+                           {"complete", complete}, {"outputs", core::Json::array()}};
+    for (const auto& f : outputs) manifest["outputs"].push_back(f);
     core::writeFileAtomically(folder_ / kManifest, manifest.dump(1) + "\n");
 }
 

@@ -5,7 +5,10 @@
 //  - it must be writable, found out before any work;
 //  - every file the run writes is recorded; at the end the files the previous run's
 //    manifest lists and this run did not write again (stale outputs of a longer
-//    earlier run) are removed, and the new manifest is written.
+//    earlier run) are removed, and the new manifest is written;
+//  - a run that fails (finish() never called) leaves no partial output: the files it
+//    wrote are removed when the folder object is destroyed, and the manifest then
+//    lists what is left of earlier runs, so that a rerun needs no --overwrite.
 #include <filesystem>
 #include <set>
 #include <string>
@@ -21,6 +24,9 @@ public:
     // a folder that cannot be created or written, or files of unknown origin (without
     // `overwrite`).
     OutputFolder(std::filesystem::path folder, std::string command, bool overwrite);
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+    ~OutputFolder();
 
     const std::filesystem::path& path() const { return folder_; }
     // The full path of `relative`, recorded as one of this run's outputs; its folder
@@ -32,9 +38,13 @@ public:
     void finish();
 
 private:
+    void abandon() noexcept;
+    void writeManifest(const std::set<std::string>& outputs, bool complete) const;
+
     std::filesystem::path folder_;
     std::string command_;
-    std::set<std::string> previous_, written_;
+    std::set<std::string> previous_, written_, kept_;
+    bool finished_ = false;
 };
 
 } // namespace hush::cli

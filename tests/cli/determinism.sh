@@ -33,4 +33,17 @@ print(json.dumps(strip(report.get("chains", report)), sort_keys=True))
 PY
 }
 [[ "$(metrics a/report.json)" == "$(metrics b/report.json)" ]] || fail "report metrics differ between two runs"
-echo "determinism: $count EXR outputs and the report metrics identical across two processes"
+
+# `hush demo` twice prints the same quality table: every column but the GPU time
+# (the last), in two processes that each render their own frames.
+quality_table() {
+    sed -n '/^quality:/,/^$/p' "$1" | grep '^| ' | awk -F'|' 'BEGIN { OFS = "|" } { $(NF-1) = ""; print }'
+}
+demo=(demo --size 32x32 --frames 8 --reference-every 4 --reference-spp 8 --chain eaw,svgf,bmfr,mara,rdae)
+"$hush" "${demo[@]}" --out demo1 > demo1.txt
+"$hush" "${demo[@]}" --out demo2 > demo2.txt
+rows="$(quality_table demo1.txt | wc -l)"
+[[ $rows == 8 ]] || fail "expected a quality table of 8 rows (header, rule, noisy, 5 chains) in hush demo's output, found $rows"
+diff <(quality_table demo1.txt) <(quality_table demo2.txt) > /dev/null ||
+    fail "hush demo printed different quality tables: $(diff <(quality_table demo1.txt) <(quality_table demo2.txt))"
+echo "determinism: $count EXR outputs and the report metrics identical across two processes; hush demo's table too"

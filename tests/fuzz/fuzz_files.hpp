@@ -9,6 +9,8 @@
 #include <hush/core/error.hpp>
 #include <hush/tracer/obj_loader.hpp>
 
+#include "fuzz_require.hpp"
+
 namespace hush::fuzz {
 
 inline tracer::FileReader memoryReader(std::string_view self) {
@@ -21,11 +23,6 @@ inline tracer::FileReader memoryReader(std::string_view self) {
             return {name, std::string(self)};
         throw Error(ErrorKind::NotFound, name + ": no such file");
     };
-}
-
-// A broken invariant in a parser's output: crash so that libFuzzer keeps the input.
-inline void require(bool ok) {
-    if (!ok) __builtin_trap();
 }
 
 } // namespace hush::fuzz

@@ -1,6 +1,8 @@
 // passes/common/sanitize: NaN / Inf replaced and counted, ranges clamped.
 #include <catch2/catch.hpp>
 
+#include <tuple>
+
 #include <cmath>
 #include <limits>
 
@@ -55,9 +57,14 @@ TEST_CASE("sanitize replaces and counts non-finite values per channel", "[common
     };
     for (const Case& c : {Case{InputChannel::Color, color}, Case{InputChannel::Depth, depth},
                           Case{InputChannel::MeshId, meshid}}) {
-        const auto range = passes::sanitizeRange(c.channel);
+        // The valid ranges of DESIGN.md's data conventions, written here rather than
+        // read from passes::sanitizeRange, so that a change there fails this test.
+        constexpr float big = std::numeric_limits<float>::max();
+        const auto [lo, hi, replacement] = c.channel == InputChannel::Color   ? std::tuple{0.0f, 1e8f, 0.0f}
+                                           : c.channel == InputChannel::Depth ? std::tuple{0.0f, big, 0.0f}
+                                                                              : std::tuple{-1.0f, big, -1.0f};
         size_t replaced = 0;
-        auto ref = reference::sanitize(c.image, range.lo, range.hi, range.replacement, replaced);
+        auto ref = reference::sanitize(c.image, lo, hi, replacement, replaced);
         auto gpu = readOutput(graph, out.inputs[c.channel]);
         INFO("channel " << passes::inputChannelInfo(c.channel).name);
         CHECK(replaced == counts[size_t(c.channel)]);

@@ -80,6 +80,7 @@ void checkExrFile(const std::string& path, std::string_view what) {
     if (in.gcount() != 4 || !Imf::isImfMagic(magic.data()))
         throw Error(ErrorKind::InvalidArgument,
                     prefix + "not an OpenEXR file (it does not start with the OpenEXR magic number)");
+    checkExrHeader(in, fs::file_size(path, ec), prefix);
 }
 
 std::string boxText(const Imath::Box2i& box) {

@@ -1,6 +1,8 @@
 #pragma once
 // Private helpers shared by the frame writer, the frame reader and the BMFR dataset
 // reader. Only src/ sees OpenEXR: the public headers stay free of it.
+#include <cstdint>
+#include <istream>
 #include <string>
 #include <string_view>
 
@@ -33,6 +35,14 @@ inline constexpr const char* kCamFar = "far";
 // start with the OpenEXR magic number. `what` says what the caller wanted ("frame").
 // Checked up front because OpenEXR's own messages for these cases are obscure.
 void checkExrFile(const std::string& path, std::string_view what);
+
+// Walks the first header of the OpenEXR file open in `in` (just past its magic
+// number) the way OpenEXR 3.1 reads it and refuses, with hush::Error starting with
+// `prefix`, what would make OpenEXR allocate by a damaged size before noticing the
+// damage: attribute sizes beyond the file, fixed-size types of another size, a
+// channel list or preview that does not fill its attribute, a data window beyond
+// 16384 pixels a side (exr_header_check.cpp).
+void checkExrHeader(std::istream& in, std::uintmax_t fileSize, const std::string& prefix);
 
 std::string boxText(const Imath::Box2i& box);   // "(0,0)-(12,6)"
 std::string compressionName(Imf::Compression compression);

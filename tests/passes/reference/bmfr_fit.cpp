@@ -11,6 +11,33 @@ namespace {
 using passes::BmfrFeature;
 
 constexpr float kFloatMax = 3.0e38f;
+// The fit's guards, written here rather than taken from passes/bmfr/fit.hpp, so that
+// a change to the production values fails this comparison instead of moving the
+// reference with it (docs/passes/bmfr-fit.md gives each value and why).
+constexpr float kFlatRange = 1e-6f;         // a feature whose block range is below this is flat
+constexpr float kDiagonalGuard = 1e-5f;     // back substitution skips |R_kk| below this * max
+constexpr float kDependentColumn = 3e-5f;   // the GPU's rank test on a column's norm
+constexpr float kZeroColumn = 1e-18f;       // a column of norm below this is zero
+
+// The block grid (Sec. 6.1): blocks of blockSize, shifted each frame by one of the
+// 16 offsets, which are data (in 1/64 of a block) and so taken from production; the
+// arithmetic of the grid is done here.
+struct Grid {
+    uint32_t offsetX = 0, offsetY = 0, blocksX = 0, blocksY = 0;
+};
+
+Grid blockGrid(uint32_t width, uint32_t height, const passes::BmfrFitSettings& s, uint64_t frameIndex) {
+    Grid g;
+    if (s.offsetBlocks) {
+        const auto o = passes::bmfrOffset64(uint32_t(frameIndex % 16));
+        g.offsetX = o[0] * s.blockSize / 64;
+        g.offsetY = o[1] * s.blockSize / 64;
+    }
+    // Blocks start at -offset; enough of them to reach the last pixel.
+    g.blocksX = (width + g.offsetX + s.blockSize - 1) / s.blockSize;
+    g.blocksY = (height + g.offsetY + s.blockSize - 1) / s.blockSize;
+    return g;
+}
 // The projection's rank tolerance: a column whose part independent of the earlier
 // ones is under 1e-5 of its norm counts as dependent. The features are fp32 (relative
 // rounding 6e-8, amplified by the per-block scaling), so an exact dependency such as
@@ -61,7 +88,7 @@ struct Block {
     double scale[3] = {1, 1, 1};
 };
 
-Block gatherBlock(const BmfrImages& in, const passes::BmfrFitSettings& s, const passes::BmfrBlockGrid& g,
+Block gatherBlock(const BmfrImages& in, const passes::BmfrFitSettings& s, const Grid& g,
                   uint32_t bx, uint32_t by, uint32_t frame) {
     Block b;
     const uint32_t w = in.illumination->width, h = in.illumination->height, B = s.blockSize;
@@ -87,7 +114,7 @@ Block gatherBlock(const BmfrImages& in, const passes::BmfrFitSettings& s, const 
         float lo = kFloatMax, hi = -kFloatMax;
         for (float f : raw[m]) lo = std::min(lo, f), hi = std::max(hi, f);
         const float halfRange = hi * 0.5f - lo * 0.5f;
-        const bool flat = !(2.0f * halfRange > passes::kBmfrFlatRange * std::max(std::fabs(lo), std::fabs(hi)));
+        const bool flat = !(2.0f * halfRange > kFlatRange * std::max(std::fabs(lo), std::fabs(hi)));
         for (size_t r = 0; r < W; ++r) {
             double v;
             if (s.features[m] == BmfrFeature::One) v = 1.0;
@@ -122,8 +149,8 @@ std::vector<std::array<double, 3>> solveHouseholder(std::vector<std::vector<doub
         double total = 0.0, norm2 = 0.0;
         for (size_t i = 0; i < W; ++i) total += a[k][i] * a[k][i];
         for (size_t i = rho; i < W; ++i) norm2 += a[k][i] * a[k][i];
-        const double norm = std::sqrt(norm2), dep = passes::kBmfrDependentColumn;
-        if (!(norm > double(passes::kBmfrZeroColumn)) || !(norm2 > dep * dep * total)) continue;
+        const double norm = std::sqrt(norm2), dep = kDependentColumn;
+        if (!(norm > double(kZeroColumn)) || !(norm2 > dep * dep * total)) continue;
         // v = x - alpha e_rho, alpha = -sign(x_rho) |x|; H = I - 2 v v^T / v^T v.
         const double alpha = a[k][rho] >= 0.0 ? -norm : norm;
         std::vector<double> v(W, 0.0);
@@ -153,7 +180,7 @@ std::vector<std::array<double, 3>> solveHouseholder(std::vector<std::vector<doub
             double sum = R[i][M + c];
             for (size_t i2 = i + 1; i2 < kept.size(); ++i2) sum -= R[i][kept[i2]] * coef[kept[i2]][c];
             const double d = R[i][k];
-            coef[k][c] = (std::fabs(d) > passes::kBmfrDiagonalGuard * maxDiag && d != 0.0) ? sum / d : 0.0;
+            coef[k][c] = (std::fabs(d) > kDiagonalGuard * maxDiag && d != 0.0) ? sum / d : 0.0;
         }
     }
     return coef;
@@ -169,8 +196,7 @@ FloatImage blankOutput(const BmfrImages& in) {
 
 void forEachBlock(const BmfrImages& in, const passes::BmfrFitSettings& s, uint64_t frameIndex,
                   const std::function<void(const Block&)>& fn) {
-    const auto g = passes::bmfrBlockGrid({in.illumination->width, in.illumination->height}, s.blockSize,
-                                         s.offsetBlocks, frameIndex);
+    const Grid g = blockGrid(in.illumination->width, in.illumination->height, s, frameIndex);
     for (uint32_t by = 0; by < g.blocksY; ++by)
         for (uint32_t bx = 0; bx < g.blocksX; ++bx) fn(gatherBlock(in, s, g, bx, by, uint32_t(frameIndex)));
 }

@@ -7,6 +7,7 @@
 #include <hush/core/error.hpp>
 #include <hush/rhi/format.hpp>
 #include <hush/rhi/instance.hpp>
+#include <hush/rhi/live_objects.hpp>
 #include <hush/rhi/pipeline.hpp>
 #include <hush/rhi/query_set.hpp>
 #include <hush/rhi/resource_state.hpp>

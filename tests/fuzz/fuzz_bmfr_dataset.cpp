@@ -82,8 +82,4 @@ int hush::fuzz::bmfrDataset(const std::uint8_t* data, std::size_t size) {
     return 0;
 }
 
-#ifndef HUSH_FUZZ_REPLAY   // the Catch2 corpus replay calls the function above itself
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    return hush::fuzz::bmfrDataset(data, size);
-}
-#endif
+HUSH_FUZZ_TARGET(hush::fuzz::bmfrDataset)

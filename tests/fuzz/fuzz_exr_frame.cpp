@@ -49,8 +49,4 @@ int hush::fuzz::exrFrame(const std::uint8_t* data, std::size_t size) {
     return 0;
 }
 
-#ifndef HUSH_FUZZ_REPLAY   // the Catch2 corpus replay calls the function above itself
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    return hush::fuzz::exrFrame(data, size);
-}
-#endif
+HUSH_FUZZ_TARGET(hush::fuzz::exrFrame)

@@ -35,3 +35,34 @@ inline std::vector<std::uint8_t> fileBytes(const std::filesystem::path& path) {
 }
 
 } // namespace hush::fuzz
+
+// libFuzzer's entry point calling `function`; nothing in the replay build, where the
+// Catch2 tests call the function themselves.
+#ifdef HUSH_FUZZ_REPLAY
+#define HUSH_FUZZ_TARGET(function)
+#else
+#define HUSH_FUZZ_TARGET(function)                                                    \
+    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) { \
+        return function(data, size);                                                  \
+    }
+#endif
+
+#ifdef HUSH_FUZZ_REPLAY
+#include <catch2/catch.hpp>
+
+namespace hush::fuzz {
+
+// Feeds every file of a kept corpus to `harness`: each must return 0 (a trap or an
+// exception other than hush::Error fails the test).
+inline void replayCorpus(const std::filesystem::path& folder, int (*harness)(const std::uint8_t*, std::size_t)) {
+    const auto files = corpusFiles(folder);
+    REQUIRE(files.size() >= 1);   // the seeds at least
+    for (const auto& file : files) {
+        INFO(file.string());
+        const auto bytes = fileBytes(file);
+        CHECK(harness(bytes.data(), bytes.size()) == 0);
+    }
+}
+
+} // namespace hush::fuzz
+#endif

@@ -3,6 +3,7 @@
 // hush::Error naming the file and the problem.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -134,6 +135,41 @@ TEST_CASE("frame reading: missing files, non-EXR files and truncated files name 
     const std::string corrupt = dir.file("corrupt.exr");
     std::ofstream(corrupt, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
     CHECK_THROWS_WITH(readFrame(corrupt), Catch::Contains(corrupt) && Catch::Contains("damaged"));
+}
+
+TEST_CASE("frame reading: a header that claims more than the file holds is refused before OpenEXR allocates it",
+          "[frame_io]") {
+    // Found by tests/fuzz/fuzz_exr_frame: OpenEXR 3.1 allocates and zero-fills what a
+    // damaged header claims (1.6 GB for a string in a 973-byte file, seconds of work).
+    TempDir dir;
+    const std::string good = dir.file("good.exr");
+    writeFrame(test::makeFullFrame(8, 4), good);
+    const auto bytes = test::fileBytes(good);
+    const auto at = [&](const std::string& text) { return std::search(bytes.begin(), bytes.end(), text.begin(), text.end()) - bytes.begin(); };
+    const auto patched = [&](const char* name, std::ptrdiff_t offset, std::initializer_list<unsigned char> values) {
+        auto copy = bytes;
+        std::ptrdiff_t i = offset;
+        for (const unsigned char v : values) copy[size_t(i++)] = char(v);
+        const std::string path = dir.file(name);
+        std::ofstream(path, std::ios::binary).write(copy.data(), std::streamsize(copy.size()));
+        return path;
+    };
+    // The size field of the first string attribute ("hush.scene": name, "string", size).
+    const auto scene = at("hush.scene");
+    const auto sceneSize = scene + std::ptrdiff_t(std::string("hush.scene").size() + 1 + std::string("string").size() + 1);
+    const std::string huge = patched("huge.exr", sceneSize, {0x73, 0x68, 0x2e, 0x63});   // 1.66e9 bytes
+    CHECK_THROWS_WITH(readFrame(huge), Catch::Contains(huge) && Catch::Contains("'hush.scene' claims 1663985779 bytes"));
+    CHECK_THROWS_WITH(readFrameInfo(huge), Catch::Contains("damaged or truncated"));
+    // A data window of 2^31 lines.
+    const auto window = at("dataWindow") + std::ptrdiff_t(std::string("dataWindow").size() + 1 + std::string("box2i").size() + 1 + 4);
+    const std::string tall = patched("tall.exr", window + 12, {0xff, 0xff, 0xff, 0x7f});
+    try {
+        readFrame(tall);
+        FAIL("expected an error");
+    } catch (const hush::Error& e) {
+        CHECK(e.kind() == hush::ErrorKind::Unsupported);
+        CHECK_THAT(e.what(), Catch::Contains(tall) && Catch::Contains("at most 16384 pixels per side"));
+    }
 }
 
 TEST_CASE("frame reading: a hush layer with missing or extra components is refused", "[frame_io]") {

@@ -8,13 +8,7 @@
 namespace {
 
 void replay(const char* target, int (*harness)(const std::uint8_t*, std::size_t)) {
-    const auto files = hush::fuzz::corpusFiles(std::string(HUSH_TEST_DATA_DIR "/fuzz_corpus/") + target);
-    REQUIRE(files.size() >= 2);   // the seeds at least
-    for (const auto& file : files) {
-        INFO(file.string());
-        const auto bytes = hush::fuzz::fileBytes(file);
-        CHECK(harness(bytes.data(), bytes.size()) == 0);
-    }
+    hush::fuzz::replayCorpus(std::string(HUSH_TEST_DATA_DIR "/fuzz_corpus/") + target, harness);
 }
 
 } // namespace

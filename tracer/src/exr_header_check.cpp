@@ -38,8 +38,20 @@ public:
     HeaderWalk(std::istream& in, std::uintmax_t fileSize, const std::string& prefix)
         : in_(in), fileSize_(fileSize), prefix_(prefix) {}
 
+    // A multi-part file (version flag 0x1000) has one header per part, the list ended
+    // by an empty header (a lone null byte); the others have one.
     void run() {
-        in_.seekg(8);   // magic number and version
+        in_.seekg(4);   // past the magic number
+        const bool multipart = (read<int32_t>("the version is cut short") & 0x1000) != 0;
+        for (int part = 0;; ++part) {
+            if (multipart && part > 0 && in_.peek() == 0) return;
+            walkHeader();
+            if (!multipart) return;
+        }
+    }
+
+private:
+    void walkHeader() {
         for (;;) {
             const auto name = readName();
             if (!name) damaged("the header does not end");
@@ -57,7 +69,6 @@ public:
         }
     }
 
-private:
     [[noreturn]] void damaged(const std::string& why) const {
         throw Error(ErrorKind::InvalidArgument, prefix_ + "the file is damaged or truncated (" + why + ")");
     }

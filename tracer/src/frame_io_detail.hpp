@@ -36,7 +36,7 @@ inline constexpr const char* kCamFar = "far";
 // Checked up front because OpenEXR's own messages for these cases are obscure.
 void checkExrFile(const std::string& path, std::string_view what);
 
-// Walks the first header of the OpenEXR file open in `in` (just past its magic
+// Walks the headers of the OpenEXR file open in `in` (just past its magic
 // number) the way OpenEXR 3.1 reads it and refuses, with hush::Error starting with
 // `prefix`, what would make OpenEXR allocate by a damaged size before noticing the
 // damage: attribute sizes beyond the file, fixed-size types of another size, a

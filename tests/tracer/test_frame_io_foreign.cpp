@@ -135,7 +135,9 @@ TEST_CASE("BMFR dataset frames: the images and the text camera file map onto hus
     CHECK(frame.height == 7);
     CHECK(frame.index == 1);
     CHECK(frame.channels.size() == 5);
-    CHECK(frame.get(Channel::Color).at(4, 2)[0] == 104.0f);
+    // color1.exr holds demodulated illumination (104 at R of (4, 2)); albedo1.exr 134
+    // there: hush's colour is their product, full radiance.
+    CHECK(frame.get(Channel::Color).at(4, 2)[0] == 104.0f * 134.0f);
     CHECK(frame.get(Channel::Normal).at(4, 2)[1] == 112.0f);
     CHECK(frame.get(Channel::Position).at(4, 2)[2] == 120.0f - 8.0f);
     CHECK(frame.get(Channel::Albedo).at(0, 6)[1] == 136.0f);

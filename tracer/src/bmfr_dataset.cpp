@@ -60,6 +60,15 @@ Image readRgb(const std::string& path, uint32_t width, uint32_t height) {
     }
 }
 
+// The authors' color<N>.exr is illumination with the first-bounce albedo already
+// removed (Sec. 3: "Before inputting the 1 spp input into our post-processing
+// pipeline, we remove first bounce surface albedo from it"; their kernels multiply by
+// albedo at the end and never divide). hush's `color` is full radiance, which its
+// chains demodulate themselves, so the albedo is put back here.
+void remodulate(Image& illumination, const Image& albedo) {
+    for (size_t i = 0; i < illumination.pixels.size(); ++i) illumination.pixels[i] *= albedo.pixels[i];
+}
+
 } // namespace
 
 BmfrCameraData readBmfrCameraFile(const std::string& path) {
@@ -124,6 +133,7 @@ Frame readBmfrFrame(const std::string& folder, uint32_t index, const BmfrCameraD
         frame.height = image.height;
         frame.channels[buffer.channel] = std::move(image);
     }
+    remodulate(frame.channels[Channel::Color], frame.channels[Channel::Albedo]);
     const std::string reference = bmfrPath(folder, "reference", index);
     std::error_code ec;
     if (fs::exists(reference, ec)) frame.channels[Channel::Reference] = readRgb(reference, frame.width, frame.height);

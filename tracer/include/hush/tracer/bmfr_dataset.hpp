@@ -2,7 +2,8 @@
 // Reading the BMFR authors' dataset layout (Koskela et al. 2019, seed 002) so their
 // kind of data can be denoised by hush. Per frame N (from 0) a folder holds separate
 // 3-channel float OpenEXR files, channels "R", "G", "B":
-//   color<N>.exr           1-spp noisy radiance       -> Channel::Color
+//   color<N>.exr           1-spp noisy illumination, albedo removed (Sec. 3)
+//                          -> Channel::Color = illumination * albedo (full radiance)
 //   shading_normal<N>.exr  world-space shading normal -> Channel::Normal
 //   world_position<N>.exr  world-space position       -> Channel::Position
 //   albedo<N>.exr          primary-hit albedo         -> Channel::Albedo

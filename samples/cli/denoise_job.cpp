@@ -81,12 +81,6 @@ uint32_t frameIndexOf(const std::string& path) {
     return uint32_t(std::stoul(stem.substr(stem.find('_') + 1)));
 }
 
-uint64_t countNonFinite(const std::vector<float>& values) {
-    uint64_t n = 0;
-    for (float v : values) n += std::isfinite(v) ? 0 : 1;
-    return n;
-}
-
 // Metrics degrade, never abort: a reference (or output) without one finite pixel leaves
 // the frame unscored, with a warning, instead of ending the job.
 template <class F> bool scoreOrWarn(DenoiseJobResult& result, const std::string& what, F&& score) {
@@ -212,7 +206,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
             auto denoised = runs[c]->process(frame);
             auto& chain = result.chains[c + 1];
             chain.sanitizedPixels += denoised.sanitized;
-            const uint64_t bad = countNonFinite(denoised.radiance.rgba) + countNonFinite(denoised.display.rgba);
+            const uint64_t bad = frames::countNonFinite(denoised.radiance.rgba) + frames::countNonFinite(denoised.display.rgba);
             chain.nonFiniteOutputs += bad;
             if (bad) chain.nonFiniteFrames.push_back(frame.index);
             writeOutputs(o, out, chain.name, frame, denoised.radiance, denoised.display);

@@ -1,5 +1,6 @@
 #include "frame_upload.hpp"
 
+#include <cmath>
 #include <cstring>
 
 #include <hush/core/error.hpp>
@@ -98,6 +99,12 @@ void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame, const 
         inputs.upload(c, pixels, components);
     }
     inputs.setCamera(frameCamera(frame));
+}
+
+uint64_t countNonFinite(std::span<const float> values) {
+    uint64_t count = 0;
+    for (const float v : values) count += std::isfinite(v) ? 0 : 1;
+    return count;
 }
 
 } // namespace hush::frames

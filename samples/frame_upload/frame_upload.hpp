@@ -4,6 +4,7 @@
 // the chain, and how to render it.
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <hush/passes/chain_runner.hpp>
@@ -26,5 +27,9 @@ using ChannelEdit = std::function<void(passes::InputChannel, std::vector<float>&
 // layer uploads zeros (a renderer that does not split emission off: none to take
 // out); any other missing layer is hush::Error (NotFound).
 void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame, const ChannelEdit& edit = {});
+
+// Non-finite values in a chain's read-back output: the CLI, the soak run and the
+// chain tests count them in every output they read.
+uint64_t countNonFinite(std::span<const float> values);
 
 } // namespace hush::frames

@@ -31,12 +31,6 @@ std::vector<tracer::Frame> renderSequence(const std::string& scene, rhi::Extent2
     return frames;
 }
 
-uint64_t countNonFinite(const std::vector<float>& values) {
-    uint64_t count = 0;
-    for (const float v : values) count += std::isfinite(v) ? 0 : 1;
-    return count;
-}
-
 // Least-squares slope of y over x.
 double slope(const std::vector<double>& x, const std::vector<double>& y) {
     if (x.size() < 2) return 0.0;
@@ -101,7 +95,7 @@ SoakResult runSoak(const rhi::Device& device, const SoakPlan& plan, const std::f
             for (uint32_t f = 0; f < count; ++f) {
                 frames::uploadFrame(runner, frames[f % frames.size()]);
                 runner.run();
-                sample.nonFinite += countNonFinite(runner.readDisplay());
+                sample.nonFinite += frames::countNonFinite(runner.readDisplay());
             }
             // Sampled while the runner is alive: its footprint is part of what must not grow.
             done += count;

@@ -108,11 +108,7 @@ double relativeL1(const std::vector<float>& a, const std::vector<float>& b) {
     return norm > 0.0 ? diff / norm : diff;
 }
 
-size_t nonFinite(const std::vector<float>& values) {
-    size_t n = 0;
-    for (float v : values) n += std::isfinite(v) ? 0 : 1;
-    return n;
-}
+size_t nonFinite(const std::vector<float>& values) { return size_t(frames::countNonFinite(values)); }
 
 Score score(const std::vector<std::vector<float>>& displays, const std::vector<tracer::Frame>& frames,
             passes::MetricsEvaluator& metrics) {

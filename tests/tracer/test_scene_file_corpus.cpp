@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <catch2/catch.hpp>
 
@@ -14,24 +12,19 @@
 #include <hush/tracer/scene_file.hpp>
 
 #include "../fuzz/fuzz_files.hpp"   // the in-memory files the fuzz harnesses use
+#include "../fuzz/fuzz_replay.hpp"  // the corpus files
 
 using namespace hush::tracer;
 
 namespace {
 
 std::vector<std::filesystem::path> corpus(const char* parser) {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(HUSH_TEST_DATA_DIR "/fuzz_corpus/") + parser))
-        if (entry.is_regular_file()) files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
+    return hush::fuzz::corpusFiles(std::string(HUSH_TEST_DATA_DIR "/fuzz_corpus/") + parser);
 }
 
 std::string contents(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
+    const auto bytes = hush::fuzz::fileBytes(path);
+    return {bytes.begin(), bytes.end()};
 }
 
 // Runs `parse` on every corpus file; returns how many parsed without an error.

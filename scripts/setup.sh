@@ -25,6 +25,7 @@ packages=(
   libimath-dev                  # half.h: fp16 conversion (core/)
   nlohmann-json3-dev            # JSON scene and chain files (tracer/, passes/)
   libpng-dev                    # PNG images of the denoised frames (samples/cli)
+  libcairo2-dev                 # hush sweep's plots, SVG and PNG (samples/cli)
   catch2                        # test framework (v2)
   vulkan-validationlayers       # tests run with validation + synchronization validation
   vulkan-tools                  # vulkaninfo, for diagnosing a machine

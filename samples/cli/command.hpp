@@ -35,6 +35,7 @@ const Command& renderCommand();
 const Command& denoiseCommand();
 const Command& demoCommand();
 const Command& datasetCommand();
+const Command& sweepCommand();
 
 // hush::Error (InvalidArgument) for an argument a subcommand does not know.
 [[noreturn]] void unknownArgument(std::string_view command, std::string_view arg);

@@ -13,6 +13,7 @@
 #include "denoise_job.hpp"
 #include "output_folder.hpp"
 #include "scene_argument.hpp"
+#include "sweep_result.hpp"
 
 namespace hush::cli {
 namespace {
@@ -27,7 +28,7 @@ const std::string& usage() {
     static const std::string text =
         "usage: hush denoise --in <folder> --out <folder> [--chain <list>] [--first <i>] [--frames <n>]\n"
         "                    [--no-exr] [--no-png] [--side-by-side] [--dump-graph] [--overwrite]\n"
-        "                    [--adapter <text>]\n"
+        "                    [--adapter <text>] [--budget-ms <ms> --sweep <sweep.json>]\n"
         "\n"
         "Runs denoising chains over the frames of <folder> (docs/frame-format.md), in index\n"
         "order. Writes <out>/<chain>/frame_<i>.exr (filtered radiance, layer 'color') and .png\n"
@@ -49,10 +50,21 @@ const std::string& usage() {
         "  --side-by-side    <out>/side_by_side/frame_<i>.png: noisy | chains | reference\n"
         "  --dump-graph      <out>/graph.<chain>.dot and .json: each compiled graph\n"
         "  --adapter <text>  use the first adapter whose name contains <text>\n"
+        "  --budget-ms <ms> --sweep <sweep.json>\n"
+        "                    instead of --chain: the configuration of that sweep (hush sweep) with\n"
+        "                    the best quality whose GPU time is within <ms> on every source; says\n"
+        "                    which and why\n"
         "\n"
         "node types for chain files:\n";
     static const std::string full = text + passes::describeChainNodes();
     return full;
+}
+
+// The chain file of the sweep's best configuration within the budget, saying why.
+std::string chainWithinBudget(const std::string& sweepPath, double budgetMs) {
+    const auto choice = chooseWithinBudget(readSweepJson(sweepPath), budgetMs);
+    std::printf("hush denoise: budget %.3g ms: %s\n", budgetMs, choice.why.c_str());
+    return (std::filesystem::path(sweepPath).parent_path() / "configs" / (choice.config + ".json")).string();
 }
 
 int runDenoise(std::span<const std::string_view> args) {
@@ -61,9 +73,13 @@ int runDenoise(std::span<const std::string_view> args) {
     rhi::AdapterRequest request;
     uint32_t first = 0, count = ~0u;
     bool dump = false;
+    std::string sweep;
+    double budgetMs = 0.0;
     for (size_t i = 0; i < args.size(); ++i) {
         std::string v;
         if (takeOption(args, i, "--in", v)) in = v;
+        else if (takeOption(args, i, "--budget-ms", v)) budgetMs = core::parseNumber(v, "--budget-ms", 1e-6, 1e9);
+        else if (takeOption(args, i, "--sweep", v)) sweep = v;
         else if (takeOption(args, i, "--out", v)) options.outFolder = v;
         else if (takeOption(args, i, "--chain", v)) chains = v;
         else if (takeOption(args, i, "--first", v)) first = parseCount(v, "--first", 0, ~0u);
@@ -78,11 +94,14 @@ int runDenoise(std::span<const std::string_view> args) {
     }
     if (in.empty()) throw Error(ErrorKind::InvalidArgument, "hush denoise needs --in <folder of frames>");
     if (options.outFolder.empty()) throw Error(ErrorKind::InvalidArgument, "hush denoise needs --out <folder>");
+    if ((budgetMs > 0.0) != !sweep.empty())
+        throw Error(ErrorKind::InvalidArgument, "--budget-ms and --sweep go together: the budget picks from a sweep's "
+                                                "results (hush sweep writes sweep.json)");
+    if (budgetMs > 0.0) chains = chainWithinBudget(sweep, budgetMs);
     options.chains = splitList(chains);
     if (options.chains.empty()) throw Error(ErrorKind::InvalidArgument, "--chain names no chain");
     for (const auto& path : tracer::listFrames(in)) {
-        const auto name = std::filesystem::path(path).stem().string();   // frame_<i>
-        const auto index = std::stoul(name.substr(name.find('_') + 1));
+        const auto index = frameIndexOf(path);
         if (index >= first && options.framePaths.size() < count) options.framePaths.push_back(path);
     }
     if (options.framePaths.empty())

@@ -19,6 +19,11 @@
 
 namespace hush::cli {
 
+uint32_t frameIndexOf(const std::string& path) {
+    const auto stem = std::filesystem::path(path).stem().string();
+    return uint32_t(std::stoul(stem.substr(stem.find('_') + 1)));
+}
+
 double median(std::vector<double> values) {
     if (values.empty()) return 0.0;
     std::sort(values.begin(), values.end());
@@ -57,9 +62,15 @@ std::string frameName(uint32_t index, const char* extension) {
     return name;
 }
 
+void writePngOutput(const DenoiseJobOptions& o, OutputFolder& out, const std::string& folder, uint32_t index,
+                    const RgbaImage& display) {
+    writePng(out.file(std::filesystem::path(o.outputPrefix) / folder / frameName(index, "png")).string(),
+             display.width, display.height, encodeSrgb8(display));
+}
+
 void writeOutputs(const DenoiseJobOptions& o, OutputFolder& out, const std::string& chain,
                   const tracer::Frame& source, const RgbaImage& radiance, const RgbaImage& display) {
-    const std::filesystem::path folder(chain);
+    const std::filesystem::path folder = std::filesystem::path(o.outputPrefix) / chain;
     if (o.writeExr) {
         tracer::Frame frame;
         frame.width = source.width, frame.height = source.height, frame.index = source.index;
@@ -70,15 +81,8 @@ void writeOutputs(const DenoiseJobOptions& o, OutputFolder& out, const std::stri
             for (size_t c = 0; c < 3; ++c) color.pixels[i * 3 + c] = radiance.rgba[i * 4 + c];
         tracer::writeFrame(frame, out.file(folder / frameName(source.index, "exr")).string());
     }
-    if (o.writePng)
-        writePng(out.file(folder / frameName(source.index, "png")).string(), display.width, display.height,
-                 encodeSrgb8(display));
-}
-
-// frame_<i>.exr -> i (tracer::listFrames lists only such names).
-uint32_t frameIndexOf(const std::string& path) {
-    const auto stem = std::filesystem::path(path).stem().string();
-    return uint32_t(std::stoul(stem.substr(stem.find('_') + 1)));
+    if (o.writePng && (!o.pngScoredOnly || source.has(tracer::Channel::Reference)))
+        writePngOutput(o, out, chain, source.index, display);
 }
 
 // Metrics degrade, never abort: a reference (or output) without one finite pixel leaves
@@ -215,6 +219,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
         const bool scored = frame.has(tracer::Channel::Reference);
         RgbaImage reference;
         if (scored) reference = tonemapped(toRgba(frame.get(tracer::Channel::Reference)));
+        if (scored && o.writeReferencePng) writePngOutput(o, out, "reference", frame.index, reference);
         for (size_t c = 0; c < result.chains.size(); ++c) {
             auto& chain = result.chains[c];
             const std::string what = chain.name + " on frame " + std::to_string(frame.index);
@@ -230,11 +235,11 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
             for (const auto& d : display) panels.push_back(&d);
             panels.push_back(&reference);
             const auto strip = cli::sideBySide(panels);
-            writePng(out.file(std::filesystem::path("side_by_side") / frameName(frame.index, "png")).string(),
-                     strip.width, strip.height, encodeSrgb8(strip));
+            writePngOutput(o, out, "side_by_side", frame.index, strip);
         }
         previous = std::move(display);
-        progress.update(double(f + 1) / double(o.framePaths.size()),
+        if (!o.quiet)
+            progress.update(double(f + 1) / double(o.framePaths.size()),
                         "frame " + std::to_string(f + 1) + "/" + std::to_string(o.framePaths.size()));
     }
     for (size_t c = 0; c < runs.size(); ++c) {
@@ -249,8 +254,9 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
     }
     result.frames = uint32_t(o.framePaths.size());
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    progress.finish("done: " + std::to_string(result.frames) + " frames, " + std::to_string(runs.size()) +
-                    " chain(s) in " + formatSeconds(result.seconds));
+    if (!o.quiet)
+        progress.finish("done: " + std::to_string(result.frames) + " frames, " + std::to_string(runs.size()) +
+                        " chain(s) in " + formatSeconds(result.seconds));
     return result;
 }
 

@@ -25,6 +25,11 @@ struct DenoiseJobOptions {
     bool writePng = true;
     bool sideBySide = false;             // noisy | chains... | reference, on scored frames
     bool dumpGraph = false;              // <out>/graph.<chain>.dot and .json
+    // For sweeps, which run many configurations over one sequence:
+    std::string outputPrefix;            // outputs go to <out>/<prefix>/<chain>/ (empty: <out>/<chain>/)
+    bool pngScoredOnly = false;          // PNGs only of frames with a reference
+    bool writeReferencePng = false;      // <prefix>/reference/frame_<i>.png on scored frames
+    bool quiet = false;                  // no progress line (the caller shows its own)
 };
 
 struct ScoredFrame {
@@ -65,6 +70,8 @@ std::string formatReportTables(const DenoiseJobResult& result);
 std::string reportJson(const DenoiseJobResult& result, const std::string& adapterName);
 
 double median(std::vector<double> values);
+// frame_<i>.exr -> i (tracer::listFrames lists only such names).
+uint32_t frameIndexOf(const std::string& path);
 
 // Checks the frames, runs the job on the requested adapter, prints the tables, writes
 // report.json and the folder's manifest. Exit code 1 (kExitFailed) when an output

@@ -22,8 +22,8 @@ namespace hush::cli {
 namespace {
 
 // Every subcommand, in the order `hush --help` lists them.
-std::array<const Command*, 5> commands() {
-    return {&demoCommand(), &denoiseCommand(), &renderCommand(), &datasetCommand(), &infoCommand()};
+std::array<const Command*, 6> commands() {
+    return {&demoCommand(), &denoiseCommand(), &sweepCommand(), &renderCommand(), &datasetCommand(), &infoCommand()};
 }
 
 std::string commandNames() {

@@ -109,6 +109,13 @@ void OutputFolder::finish() {
     finished_ = true;
 }
 
+void OutputFolder::checkpoint() {
+    kept_.insert(written_.begin(), written_.end());
+    std::set<std::string> outputs = kept_;
+    outputs.insert(previous_.begin(), previous_.end());
+    writeManifest(outputs, false);
+}
+
 OutputFolder::~OutputFolder() {
     if (!finished_) abandon();
 }

@@ -34,6 +34,11 @@ public:
     std::filesystem::path file(const std::filesystem::path& relative);
     // Records `relative` (e.g. input frames reused from an earlier run) without writing it.
     void keep(const std::filesystem::path& relative);
+    // Every file written so far survives a failure or an interruption of the rest of
+    // the run (the finished steps of a resumable job: hush sweep's frames and
+    // results), and the manifest (complete: false) says so, so that the same command
+    // resumes there without --overwrite.
+    void checkpoint();
     // Removes the earlier run's stale outputs and writes the manifest.
     void finish();
 

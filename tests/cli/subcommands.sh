@@ -11,7 +11,7 @@ rm -rf "$work"; mkdir -p "$work"; cd "$work"
 
 "$hush" --help | grep -q "usage: hush <command>" || fail "hush --help prints no usage"
 "$hush" --version | grep -qE "^hush [0-9]+\.[0-9]+\.[0-9]+" || fail "hush --version prints no version"
-for command in demo denoise render dataset info; do
+for command in demo denoise sweep render dataset info; do
     "$hush" "$command" --help | grep -q "usage: hush $command" || fail "hush $command --help prints no usage"
 done
 expect_exit 2 "usage: hush <command>"

@@ -1,0 +1,136 @@
+// hush sweep's pieces without a GPU: the Pareto front, knobs and configurations;
+// and (run by tests/cli/sweep.sh on a sweep it made) the checks of a sweep's output.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <hush/core/error.hpp>
+
+#include "sweep_config.hpp"
+#include "sweep_result.hpp"
+
+using namespace hush;
+using namespace hush::cli;
+
+namespace {
+
+SweepPoint point(const std::string& config, double ms, double ssim) {
+    SweepPoint p{.source = "s", .config = config, .gpuMs = ms};
+    p.quality.ssim = ssim;
+    p.quality.rmse = 1.0 - ssim;
+    return p;
+}
+
+// True when some point is at least as fast and as good as points[i], and better in one.
+bool dominated(const std::vector<const SweepPoint*>& points, size_t i, const SweepMetric& m) {
+    auto q = [&](size_t k) { return m.higherIsBetter ? m.of(points[k]->quality) : -m.of(points[k]->quality); };
+    for (size_t j = 0; j < points.size(); ++j)
+        if (j != i && points[j]->gpuMs <= points[i]->gpuMs && q(j) >= q(i) &&
+            (points[j]->gpuMs < points[i]->gpuMs || q(j) > q(i)))
+            return true;
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("the pareto front holds exactly the points no other beats on time and quality", "[sweep]") {
+    const std::vector<SweepPoint> all{point("a", 1.0, 0.80), point("b", 2.0, 0.90), point("c", 3.0, 0.85),
+                                      point("d", 0.5, 0.70), point("e", 4.0, 0.95), point("f", 2.0, 0.90)};
+    std::vector<const SweepPoint*> points;
+    for (const auto& p : all) points.push_back(&p);
+    for (const auto* key : {"ssim", "rmse"}) {
+        const auto front = paretoFront(points, sweepMetric(key));
+        std::vector<std::string> names;
+        for (size_t i : front) names.push_back(points[i]->config);
+        // c is beaten by b; f ties b exactly and only the first of a tie stays.
+        CHECK(names == std::vector<std::string>{"d", "a", "b", "e"});
+    }
+    CHECK_THROWS_WITH(sweepMetric("mse"), Catch::Contains("known: rmse, relmse, psnr, ssim, temporal"));
+}
+
+TEST_CASE("knobs expand into one chain file per combination of their values", "[sweep]") {
+    const auto configs = expandConfigs({"svgf", "eaw"}, {parseKnob("svgf.atrous.iterations=1..3"),
+                                                        parseKnob("svgf.useTaa=true,false")});
+    REQUIRE(configs.size() == 7);   // 3 x 2 for svgf, eaw once
+    CHECK(configs[0].name == "svgf");
+    CHECK(configs[0].label == "svgf atrous.iterations=1 useTaa=true");
+    CHECK(configs[5].label == "svgf atrous.iterations=3 useTaa=false");
+    CHECK(configs[5].name == "svgf-5");
+    CHECK(configs[6].label == "eaw (its settings)");
+    CHECK(configs[5].chainJson.find("\"iterations\": 3") != std::string::npos);
+
+    CHECK_THROWS_WITH(expandConfigs({"svgf"}, {parseKnob("bmfr.fit.blockSize=16")}),
+                      Catch::Contains("no chain named 'bmfr' among --chain"));
+    CHECK_THROWS_WITH(expandConfigs({"svgf"}, {parseKnob("svgf.atrous.iterashuns=2")}),
+                      Catch::Contains("unknown field 'iterashuns'"));
+    CHECK_THROWS_WITH(expandConfigs({"bmfr"}, {parseKnob("bmfr.fit.blockSize=16,48")}),
+                      Catch::Contains("must be 16, 32 or 64"));
+    CHECK_THROWS_WITH(parseKnob("svgf.atrous.iterations"), Catch::Contains("expected <chain>.<setting>=<values>"));
+    CHECK_THROWS_WITH(parseKnob("svgf=1"), Catch::Contains("expected <chain>.<setting>"));
+}
+
+// Hidden: tests/cli/sweep.sh runs it on the folder it swept (HUSH_SWEEP_OUTPUT).
+TEST_CASE("a sweep's output: complete results, non-dominated fronts, plots and a report whose images exist",
+          "[.sweep-output]") {
+    const char* folderText = std::getenv("HUSH_SWEEP_OUTPUT");
+    REQUIRE(folderText != nullptr);
+    const std::filesystem::path folder(folderText);
+    const auto result = readSweepJson((folder / "sweep.json").string());
+    CHECK(result.complete);
+    REQUIRE(!result.sources.empty());
+    CHECK(result.points.size() == result.sources.size() * result.configs.size());
+    for (const auto& source : result.sources) {
+        const auto points = result.pointsOf(source.key);
+        for (const auto& metric : sweepMetrics()) {
+            const auto front = paretoFront(points, metric);
+            REQUIRE(!front.empty());
+            for (size_t i = 0; i < points.size(); ++i) {
+                const bool onFront = std::find(front.begin(), front.end(), i) != front.end();
+                if (onFront) CHECK_FALSE(dominated(points, i, metric));
+            }
+        }
+        for (const auto* p : points) {
+            CHECK(p->gpuMs > 0.0);
+            CHECK(p->deviceBytes > 0);
+            CHECK(p->quality.scoredFrames > 0);
+        }
+        const SweepReportFiles files;
+        CHECK(std::filesystem::file_size(folder / files.plotPng(source)) > 1000);
+        CHECK(std::filesystem::file_size(folder / files.plotSvg(source)) > 1000);
+    }
+    std::ifstream html(folder / "report.html");
+    std::stringstream text;
+    text << html.rdbuf();
+    const std::string page = text.str();
+    const std::regex source("src=\"([^\"]+)\"");
+    size_t images = 0;
+    for (auto it = std::sregex_iterator(page.begin(), page.end(), source); it != std::sregex_iterator(); ++it, ++images)
+        CHECK(std::filesystem::exists(folder / (*it)[1].str()));
+    // Per source: its plot, noisy, reference and at least one front configuration.
+    CHECK(images >= 4 * result.sources.size());
+}
+
+TEST_CASE("budget mode picks the best quality within the budget on every source, and says why", "[sweep]") {
+    SweepResult r;
+    r.metric = "ssim";
+    r.sources = {{.key = "s"}, {.key = "t"}};
+    r.configs = {{.chain = "eaw", .name = "eaw", .label = "eaw"}, {.chain = "svgf", .name = "svgf", .label = "svgf"},
+                 {.chain = "svgf", .name = "svgf-1", .label = "svgf fast"}};
+    auto add = [&](const std::string& source, const std::string& config, double ms, double ssim) {
+        r.points.push_back(point(config, ms, ssim));
+        r.points.back().source = source;
+    };
+    add("s", "eaw", 1.0, 0.80), add("t", "eaw", 1.2, 0.82);
+    add("s", "svgf", 3.0, 0.95), add("t", "svgf", 5.0, 0.93);       // 5 ms on t: over a 4 ms budget
+    add("s", "svgf-1", 2.0, 0.90), add("t", "svgf-1", 2.5, 0.88);
+    const auto within4 = chooseWithinBudget(r, 4.0);
+    CHECK(within4.config == "svgf-1");
+    CHECK_THAT(within4.why, Catch::Contains("next within the budget: 'eaw'") &&
+                                Catch::Contains("better but over the budget: 'svgf'"));
+    CHECK(chooseWithinBudget(r, 10.0).config == "svgf");
+    CHECK_THROWS_WITH(chooseWithinBudget(r, 0.5), Catch::Contains("the fastest, 'eaw' (eaw), takes 1.2 ms"));
+}

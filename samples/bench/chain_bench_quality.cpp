@@ -50,6 +50,7 @@ std::vector<tracer::Frame> renderSequence(const std::string& scene, const Option
     settings.width = options.qualitySize.width;
     settings.height = options.qualitySize.height;
     settings.referenceSpp = options.referenceSpp;
+    settings.antialiasedReference = true;   // scored against the pixel-filtered image (docs/sweep.md)
     std::vector<tracer::Frame> frames;
     for (uint32_t i = 0; i < options.qualityFrames; ++i) {
         settings.channels = denoiserChannels();

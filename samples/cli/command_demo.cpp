@@ -32,7 +32,8 @@ const std::string& usage() {
         "\n"
         "The main job: renders the scene's camera path (1 sample per pixel, split into direct\n"
         "and indirect light and into Mara et al.'s matte and glossy terms, with a G-buffer\n"
-        "and motion; a reference on every k-th frame),\n"
+        "and motion; an anti-aliased reference, each sample through a random point of its\n"
+        "pixel, on every k-th frame),\n"
         "writes the frames to <out>/frames/, denoises them with each chain, and writes\n"
         "  <out>/<chain>/frame_<i>.exr and .png    filtered radiance and display image\n"
         "  <out>/side_by_side/frame_<i>.png        noisy | chains | reference, scored frames\n"
@@ -62,6 +63,7 @@ int runDemo(std::span<const std::string_view> args) {
     auto& settings = sequence.settings;
     settings.width = settings.height = DemoDefaults::size;
     settings.referenceSpp = DemoDefaults::referenceSpp;
+    settings.antialiasedReference = true;   // the pixel-filtered image (docs/sweep.md)
     // Every layer but the reference (added on the scored frames). Asking for Mara et
     // al.'s matte and glossy terms makes `direct` their low-noise direct light, for
     // every chain alike (docs/tracer.md).

@@ -20,7 +20,8 @@ const std::string& usage() {
     static const std::string text =
         "usage: hush render [--scene <scene>] [--frames <n>] [--first <i>] [--size <W>x<H>]\n"
         "                   [--reference-spp <n>] [--reference-every <k>] [--channels <list>]\n"
-        "                   [--bounces <n>] [--seed <n>] [--jitter] [--threads <n>] [--overwrite]\n"
+        "                   [--bounces <n>] [--seed <n>] [--jitter] [--antialiased-reference]\n"
+        "                   [--threads <n>] [--overwrite]\n"
         "                   --out <folder>\n"
         "\n"
         "Renders frames of the scene's camera path with the path tracer and writes each\n"
@@ -41,6 +42,8 @@ const std::string& usage() {
         "  --bounces <n>          indirect bounces after the primary hit (default 1)\n"
         "  --seed <n>             sampling seed (default 1); same seed, same frames\n"
         "  --jitter               per-frame subpixel jitter of the primary rays (recorded)\n"
+        "  --antialiased-reference  each reference sample through a random point of its pixel\n"
+        "                         (a box filter), not the noisy frame's own primary ray\n"
         "  --threads <n>          rendering threads (default: every core)\n"
         "  --out <folder>         where the frames go: a new or empty folder, or an earlier hush\n"
         "                         run's (its stale frames are removed)\n"
@@ -75,6 +78,7 @@ int runRender(std::span<const std::string_view> args) {
         else if (takeOption(args, i, "--threads", v)) settings.threads = parseCount(v, "--threads", 1, 1024);
         else if (takeOption(args, i, "--out", v)) outFolder = v;
         else if (args[i] == "--jitter") settings.jitter = true;
+        else if (args[i] == "--antialiased-reference") settings.antialiasedReference = true;
         else if (args[i] == "--overwrite") overwrite = true;
         else unknownArgument("render", args[i]);
     }

@@ -137,18 +137,21 @@ SourceFrames renderedSource(const SweepOptions& o, const std::string& sceneArgum
     SequenceRequest request = o.sequence;
     request.settings.width = size.width;
     request.settings.height = size.height;
+    // Scored against the pixel-filtered image, not the noisy frame's own pixel-centre
+    // rays: temporal filters converge to the former (docs/sweep.md, `thin`).
+    request.settings.antialiasedReference = true;
     request.settings.channels.clear();
     for (const auto channel : tracer::kAllChannels)
         if (channel != tracer::Channel::Reference) request.settings.channels.push_back(channel);
     // The cache's name holds everything that makes the frames differ.
     const fs::path folder = fs::path("frames") / (key + "-" + std::to_string(o.sequence.frames) + "f-ref" +
                                                   std::to_string(o.sequence.referenceEvery) + "x" +
-                                                  std::to_string(o.sequence.settings.referenceSpp) + "spp");
+                                                  std::to_string(o.sequence.settings.referenceSpp) + "spp-aa");
     request.outFolder = (out.path() / folder).string();
     auto paths = fs::is_directory(request.outFolder) ? tracer::listFrames(request.outFolder) : std::vector<std::string>{};
     if (paths.size() != o.sequence.frames) {
         fs::create_directories(request.outFolder);
-        std::printf("hush sweep: rendering %s: %u frames, a %u-spp reference on every %u-th\n", key.c_str(),
+        std::printf("hush sweep: rendering %s: %u frames, a %u-spp anti-aliased reference on every %u-th\n", key.c_str(),
                     o.sequence.frames, o.sequence.settings.referenceSpp, o.sequence.referenceEvery);
         std::fflush(stdout);
         renderSequence(renderer, request);

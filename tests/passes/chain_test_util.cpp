@@ -50,6 +50,25 @@ const std::vector<tracer::Frame>& sceneSequence(const std::string& scene, uint32
     return frames;
 }
 
+const std::vector<tracer::Frame>& benchSequence(const std::string& scene, uint32_t size) {
+    static std::map<std::pair<std::string, uint32_t>, std::vector<tracer::Frame>> cache;
+    auto& frames = cache[{scene, size}];
+    if (!frames.empty()) return frames;
+    const tracer::Renderer renderer(tracer::makeBuiltinScene(scene));
+    tracer::RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.referenceSpp = 256;
+    settings.antialiasedReference = true;
+    for (uint32_t i = 0; i < 16; ++i) {
+        settings.channels.clear();
+        for (const auto channel : tracer::kAllChannels)
+            if (channel != tracer::Channel::Reference) settings.channels.push_back(channel);
+        if (i == 7 || i == 15) settings.channels.push_back(tracer::Channel::Reference);
+        frames.push_back(renderer.render(i, settings));
+    }
+    return frames;
+}
+
 const std::vector<tracer::Frame>& cornellSequence() {
     static const std::vector<tracer::Frame> frames = renderCornell(96);
     return frames;

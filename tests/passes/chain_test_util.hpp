@@ -27,6 +27,11 @@ const std::vector<tracer::Frame>& cornellSequence128();
 // use, once per scene and size.
 const std::vector<tracer::Frame>& sceneSequence(const std::string& scene, uint32_t size);
 
+// As hush-bench-chains' quality part renders it (and hush sweep, hush demo): every
+// layer, 16 frames, a 256-spp anti-aliased reference (RenderSettings::
+// antialiasedReference) on frames 7 and 15. Rendered on first use.
+const std::vector<tracer::Frame>& benchSequence(const std::string& scene, uint32_t size);
+
 // Called with each channel's pixels before upload, to inject faults.
 using ChannelEdit = frames::ChannelEdit;
 void uploadFrame(passes::ChainRunner& runner, const tracer::Frame& frame, const ChannelEdit& edit = {});

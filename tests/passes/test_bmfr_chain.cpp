@@ -120,7 +120,7 @@ TEST_CASE("a chain file based on bmfr applies its settings", "[bmfr][bmfr-chain]
     const passes::BmfrSettings d;
     CHECK(d.accumulate.minWeight == 0.2f);
     CHECK(d.postAccumulate.minWeight == 0.1f);
-    CHECK(d.fit.blockSize == 32);
+    CHECK(d.fit.blockSize == 0);   // follows the frame (docs/sweep.md)
     CHECK(d.fit.epsilon == 0.01f);
     CHECK(d.fit.features.size() == 10);
     CHECK(d.fit.offsetBlocks);
@@ -138,7 +138,7 @@ TEST_CASE("bmfr chain settings errors name the field", "[bmfr][bmfr-chain][chain
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"accumulate": {"minWeight": 0}}})"),
                Contains("settings.accumulate.minWeight"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"blockSize": 24}}})"),
-               Contains("settings.fit.blockSize") && Contains("16, 32 or 64"));
+               Contains("settings.fit.blockSize") && Contains("0, 16, 32 or 64"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"features": ["one", "nx"]}}})"),
                Contains("settings.fit.features[1]") && Contains("unknown value 'nx'") && Contains("'normalX'"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"features": []}}})"),

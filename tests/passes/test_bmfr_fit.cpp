@@ -65,9 +65,25 @@ TEST_CASE("bmfr noise is uniform in [-eps, eps] with zero mean", "[bmfr]") {
     CHECK(hi > 0.0099);
 }
 
+TEST_CASE("bmfr block size 0 keeps the paper's block count: 32 pixels at 720 lines, scaled and rounded", "[bmfr]") {
+    using passes::bmfrBlockSizeFor;
+    CHECK(bmfrBlockSizeFor({1280, 720}, 0) == 32);   // the paper's frame
+    CHECK(bmfrBlockSizeFor({128, 128}, 0) == 16);
+    CHECK(bmfrBlockSizeFor({640, 360}, 0) == 16);
+    CHECK(bmfrBlockSizeFor({4096, 509}, 0) == 16);   // the boundaries: geometric means of 16, 32, 64
+    CHECK(bmfrBlockSizeFor({16, 510}, 0) == 32);
+    CHECK(bmfrBlockSizeFor({16, 1018}, 0) == 32);
+    CHECK(bmfrBlockSizeFor({16, 1019}, 0) == 64);
+    CHECK(bmfrBlockSizeFor({3840, 2160}, 0) == 64);
+    for (uint32_t B : {16u, 32u, 64u}) CHECK(bmfrBlockSizeFor({128, 128}, B) == B);   // given: kept
+    passes::BmfrFitSettings automatic, sixteen;
+    sixteen.blockSize = 16;
+    CHECK(passes::bmfrBlockBufferBytes({128, 128}, automatic) == passes::bmfrBlockBufferBytes({128, 128}, sixteen));
+}
+
 TEST_CASE("bmfr fit matches the CPU reference on random blocks", "[bmfr]") {
     test::ValidationScope scope;
-    for (uint32_t B : {16u, 32u}) {
+    for (uint32_t B : {0u, 16u, 32u}) {   // 0: follows the frame (16 here)
         const Scene sc = randomScene(48, 40, 100 + B);
         passes::BmfrFitSettings s;
         s.blockSize = B;
@@ -88,6 +104,7 @@ TEST_CASE("bmfr fit matches the CPU reference on a plane and a sphere, over seve
     test::ValidationScope scope;
     const Scene sc = realLookingScene(64, 64, 7);
     passes::BmfrFitSettings s;
+    s.blockSize = 32;   // the paper's: 1024 rows per block (the figures below are for it)
     for (uint32_t frames : {1u, 2u, 5u}) {   // frames 0, 1, 4: three grid offsets, three noise draws
         const auto gpu = runFit(sc, s, frames);
         const auto ref = reference::bmfrFit(sc.images(), s, frames - 1);

@@ -176,7 +176,13 @@ Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, cons
                 glm::dvec3 sum(0.0);
                 for (uint32_t s = 0; s < frame.referenceSpp; ++s) {
                     PixelSampler sampler(settings.seed ^ 0x72656665u, x, y, uint64_t(frameIndex) * frame.referenceSpp + s);
-                    const PathEstimate e = estimatePath(world, dir, hit, sampler, options);
+                    glm::vec3 sampleDir = dir;
+                    Hit sampleHit = hit;
+                    if (settings.antialiasedReference) {
+                        sampleDir = camera.rayDirection(glm::vec2(float(x), float(y)) + sampler.next2());
+                        sampleHit = world.intersect(camera.position, sampleDir);
+                    }
+                    const PathEstimate e = estimatePath(world, sampleDir, sampleHit, sampler, options);
                     sum += glm::dvec3(finiteOrZero(e.direct + e.indirect));
                 }
                 put(frame, Channel::Reference, x, y, glm::vec3(sum / double(frame.referenceSpp)));

@@ -21,7 +21,8 @@ constexpr std::array<std::array<uint32_t, 2>, 16> kOffsets64 = {{
 
 void validate(const BmfrFitSettings& s, const BmfrGuide& guide) {
     auto fail = [](const std::string& what) { throw Error(ErrorKind::InvalidArgument, "addBmfrFitPass: " + what); };
-    if (s.blockSize != 16 && s.blockSize != 32 && s.blockSize != 64) fail("blockSize must be 16, 32 or 64");
+    if (s.blockSize != 0 && s.blockSize != 16 && s.blockSize != 32 && s.blockSize != 64)
+        fail("blockSize must be 0 (follow the frame), 16, 32 or 64");
     if (!(std::isfinite(s.epsilon) && s.epsilon >= 0.0f)) fail("epsilon must be finite and >= 0");
     if (s.format != rhi::Format::RGBA32Float && s.format != rhi::Format::RGBA16Float)
         fail("format must be RGBA32Float or RGBA16Float");
@@ -51,6 +52,14 @@ bool bmfrNeedsAlbedo(BmfrFeature f) { return f >= BmfrFeature::AlbedoR && f <= B
 bool bmfrNeedsRoughness(BmfrFeature f) { return f == BmfrFeature::Roughness; }
 bool bmfrNeedsMeshId(BmfrFeature f) { return f == BmfrFeature::MeshId; }
 
+uint32_t bmfrBlockSizeFor(rhi::Extent2D image, uint32_t blockSize) {
+    if (blockSize != 0) return blockSize;
+    const double scaled = 32.0 * double(image.height) / 720.0;
+    if (scaled * scaled < 16.0 * 32.0) return 16;   // below the geometric mean of 16 and 32
+    if (scaled * scaled < 32.0 * 64.0) return 32;
+    return 64;
+}
+
 std::array<uint32_t, 2> bmfrOffset64(uint32_t k) { return kOffsets64[k % kOffsets64.size()]; }
 
 BmfrBlockGrid bmfrBlockGrid(rhi::Extent2D image, uint32_t blockSize, bool offsetBlocks, uint64_t frameIndex) {
@@ -70,10 +79,11 @@ BmfrBlockGrid bmfrBlockGrid(rhi::Extent2D image, uint32_t blockSize, bool offset
 
 uint64_t bmfrBlockBufferBytes(rhi::Extent2D image, const BmfrFitSettings& s) {
     // Worst case over the offsets: an offset of blockSize - 1 in both axes.
-    const uint64_t bx = (uint64_t(image.width) + 2 * s.blockSize - 2) / s.blockSize;
-    const uint64_t by = (uint64_t(image.height) + 2 * s.blockSize - 2) / s.blockSize;
+    const uint64_t block = bmfrBlockSizeFor(image, s.blockSize);
+    const uint64_t bx = (uint64_t(image.width) + 2 * block - 2) / block;
+    const uint64_t by = (uint64_t(image.height) + 2 * block - 2) / block;
     const uint64_t columns = s.features.size() + 3;
-    return bx * by * uint64_t(s.blockSize) * s.blockSize * columns * sizeof(float);
+    return bx * by * block * block * columns * sizeof(float);
 }
 
 namespace {
@@ -104,6 +114,7 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
     const auto offsetY = params.slot("offsetY", rhi::ScalarType::Uint32);
     const auto blocksX = params.slot("blocksX", rhi::ScalarType::Uint32);
     const auto frame = params.slot("frame", rhi::ScalarType::Uint32);
+    const auto blockSize = params.slot("blockSize", rhi::ScalarType::Uint32);
     const BmfrFitSettings s = settings;
     struct Out {
         graph::TextureHandle fitted;
@@ -124,7 +135,8 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
         const auto group = b.bindGroup(pipeline);
         return [=](graph::PassContext& pc) mutable {
             const rhi::Extent2D size = pc.texture(o.fitted).size();
-            const BmfrBlockGrid grid = bmfrBlockGrid(size, s.blockSize, s.offsetBlocks, pc.frameIndex());
+            const BmfrBlockGrid grid = bmfrBlockGrid(size, bmfrBlockSizeFor(size, s.blockSize), s.offsetBlocks, pc.frameIndex());
+            params.set(blockSize, grid.blockSize);
             params.set(offsetX, grid.offsetX);
             params.set(offsetY, grid.offsetY);
             params.set(blocksX, grid.blocksX);

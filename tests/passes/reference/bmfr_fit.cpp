@@ -194,8 +194,11 @@ FloatImage blankOutput(const BmfrImages& in) {
     return out;
 }
 
-void forEachBlock(const BmfrImages& in, const passes::BmfrFitSettings& s, uint64_t frameIndex,
+// A block size of 0 follows the frame (passes::bmfrBlockSizeFor, the node's own rule).
+void forEachBlock(const BmfrImages& in, const passes::BmfrFitSettings& given, uint64_t frameIndex,
                   const std::function<void(const Block&)>& fn) {
+    passes::BmfrFitSettings s = given;
+    s.blockSize = passes::bmfrBlockSizeFor({in.illumination->width, in.illumination->height}, given.blockSize);
     const Grid g = blockGrid(in.illumination->width, in.illumination->height, s, frameIndex);
     for (uint32_t by = 0; by < g.blocksY; ++by)
         for (uint32_t bx = 0; bx < g.blocksX; ++bx) fn(gatherBlock(in, s, g, bx, by, uint32_t(frameIndex)));

@@ -22,6 +22,12 @@ struct RenderSettings {
     uint32_t maraDirectSamples = 16;  // light samples of Mara's direct term (when matte or glossy is asked for)
     uint32_t seed = 1;
     bool jitter = false;              // per-frame subpixel offset of the primary rays (recorded in the frame)
+    // The reference's pixel filter. Off: each reference sample follows the noisy
+    // frame's own primary ray (pixel centre + jitter), so the reference is the
+    // noise-free estimate for that hit, aliased as the input is. On: each sample goes
+    // through a uniformly random point of the pixel (a box filter), the anti-aliased
+    // image that temporal filters converge to (docs/tracer.md).
+    bool antialiasedReference = false;
     float regularization = 0.0f;      // path-space regularisation: minimum GGX alpha after the primary hit
     uint32_t threads = 0;             // 0: every core
 };

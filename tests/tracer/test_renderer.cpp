@@ -187,3 +187,33 @@ TEST_CASE("renderer: in Mara mode direct + indirect still estimates the colour",
     INFO("mean colour " << color << ", direct + indirect " << split << ", path-mode indirect " << pathIndirect);
     REQUIRE(std::abs(split - color) < 0.03 * color);
 }
+
+TEST_CASE("renderer: an anti-aliased reference integrates each pixel's area and changes nothing else",
+          "[tracer][reference]") {
+    const Renderer renderer(test::tabletop(true));
+    RenderSettings settings;
+    settings.width = 40;
+    settings.height = 24;
+    settings.channels = {Channel::Color, Channel::Albedo, Channel::Depth, Channel::Reference};
+    settings.referenceSpp = 256;
+    const Frame centre = renderer.render(2, settings);
+    settings.antialiasedReference = true;
+    const Frame area = renderer.render(2, settings);
+    // The noisy estimate and the G-buffer still follow the pixel centres, bit for bit.
+    for (Channel c : {Channel::Color, Channel::Albedo, Channel::Depth})
+        REQUIRE(std::memcmp(centre.get(c).pixels.data(), area.get(c).pixels.data(),
+                            centre.get(c).pixels.size() * sizeof(float)) == 0);
+    // Both references estimate the same image on average, but not the same pixels:
+    // across an edge the area sample mixes both sides.
+    const auto& a = area.get(Channel::Reference).pixels;
+    const auto& c = centre.get(Channel::Reference).pixels;
+    double sumA = 0.0, sumC = 0.0, largest = 0.0, peak = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        sumA += a[i], sumC += c[i];
+        largest = std::max(largest, double(std::fabs(a[i] - c[i])));
+        peak = std::max(peak, double(c[i]));
+    }
+    INFO("mean area " << sumA / a.size() << ", mean centre " << sumC / c.size() << ", largest difference " << largest);
+    CHECK(std::fabs(sumA - sumC) < 0.05 * sumC);
+    CHECK(largest > 0.1 * peak);
+}

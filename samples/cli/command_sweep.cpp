@@ -31,7 +31,8 @@ const std::string& usage() {
     static const std::string text =
         "usage: hush sweep [--scene <list> | --in <folder>] [--chain <list>] [--vary <knob>=<values>]...\n"
         "                  [--size <list>] [--frames <n>] [--reference-every <k>] [--reference-spp <n>]\n"
-        "                  [--metric <m>] [--out <folder>] [--overwrite] [--threads <n>] [--adapter <text>]\n"
+        "                  [--exposure <list>] [--metric <m>] [--out <folder>] [--overwrite] [--threads <n>]\n"
+        "                  [--adapter <text>]\n"
         "\n"
         "Measures the speed/accuracy trade: runs every configuration (each chain with every\n"
         "combination of its knobs' values) over every frame source and reports GPU ms per frame\n"
@@ -58,6 +59,10 @@ const std::string& usage() {
         "  --frames <n>            frames per source (default 16)\n"
         "  --reference-every <k>   a reference on every k-th frame, the last of each group (default 8)\n"
         "  --reference-spp <n>     samples per pixel of each reference (default 256)\n"
+        "  --exposure <list>       also run every source with its radiance (and reference) times\n"
+        "                          each value, e.g. 1e-6,1e-3,1,1e3,1e6, the tonemap scaled back:\n"
+        "                          a scale-equivariant chain scores the same at every exposure;\n"
+        "                          prints each configuration's RMSE over its RMSE at exposure 1\n"
         "  --metric <m>            the quality axis of plots and table: rmse, relmse, psnr, ssim,\n"
         "                          temporal (default ssim); sweep.json holds the fronts of all\n"
         "  --out <folder>          default: sweep\n"
@@ -72,6 +77,7 @@ struct SweepOptions {
     std::string in, out = "sweep", metric = "ssim";
     std::vector<Knob> knobs;
     std::vector<core::Size2D> sizes{{128, 128}};
+    std::vector<double> exposures{1.0};
     SequenceRequest sequence;
     rhi::AdapterRequest adapter;
     bool overwrite = false;
@@ -99,6 +105,10 @@ SweepOptions parseOptions(std::span<const std::string_view> args) {
         else if (takeOption(args, i, "--reference-every", v)) o.sequence.referenceEvery = parseCount(v, "--reference-every", 1, 100000);
         else if (takeOption(args, i, "--reference-spp", v)) o.sequence.settings.referenceSpp = parseCount(v, "--reference-spp", 1, 1u << 20);
         else if (takeOption(args, i, "--metric", v)) o.metric = sweepMetric(v).key;
+        else if (takeOption(args, i, "--exposure", v)) {
+            o.exposures.clear();
+            for (const auto& e : splitList(v)) o.exposures.push_back(core::parseNumber(e, "--exposure", 1e-12, 1e12));
+        }
         else if (takeOption(args, i, "--out", v)) o.out = v;
         else if (takeOption(args, i, "--threads", v)) o.sequence.settings.threads = parseCount(v, "--threads", 1, 1024);
         else if (takeOption(args, i, "--adapter", v)) o.adapter.nameContains = v, o.adapter.nameFromEnvironment = false;
@@ -167,6 +177,25 @@ SourceFrames renderedSource(const SweepOptions& o, const std::string& sceneArgum
     return s;
 }
 
+// One source per exposure (the same frames): key "<key>-x<exposure>" unless the sweep
+// has exposure 1 only.
+std::vector<SourceFrames> withExposures(SourceFrames s, const std::vector<double>& exposures) {
+    s.source.family = s.source.key;
+    if (exposures.size() == 1 && exposures.front() == 1.0) return {s};
+    std::vector<SourceFrames> variants;
+    for (double e : exposures) {
+        SourceFrames v = s;
+        char suffix[32];
+        std::snprintf(suffix, sizeof suffix, "-x%g", e);
+        v.source.key += suffix;
+        v.source.exposure = e;
+        std::snprintf(suffix, sizeof suffix, ", radiance x %g", e);
+        v.source.description += suffix;
+        variants.push_back(std::move(v));
+    }
+    return variants;
+}
+
 std::vector<SourceFrames> frameSources(const SweepOptions& o, OutputFolder& out) {
     std::vector<SourceFrames> sources;
     if (!o.in.empty()) {
@@ -177,12 +206,11 @@ std::vector<SourceFrames> frameSources(const SweepOptions& o, OutputFolder& out)
                     .description = o.in + ", " + std::to_string(info.width) + "x" + std::to_string(info.height) +
                                    ", " + std::to_string(s.paths.size()) + " frames",
                     .width = info.width, .height = info.height, .frames = uint32_t(s.paths.size())};
-        sources.push_back(std::move(s));
-        return sources;
+        return withExposures(std::move(s), o.exposures);
     }
     for (const auto& scene : o.scenes)
         for (const auto size : o.sizes) {
-            sources.push_back(renderedSource(o, scene, size, out));
+            for (auto& v : withExposures(renderedSource(o, scene, size, out), o.exposures)) sources.push_back(std::move(v));
             out.checkpoint();
         }
     return sources;
@@ -205,6 +233,7 @@ SweepPoint measure(const rhi::Device& device, const SourceFrames& s, const std::
                    const std::string& config, OutputFolder& out, SweepQuality& noisy) {
     DenoiseJobOptions job{.chains = {chainFile}, .framePaths = s.paths, .writeExr = false};
     job.outputPrefix = "runs/" + s.source.key;
+    job.exposure = float(s.source.exposure);
     job.pngScoredOnly = job.writeReferencePng = job.quiet = true;
     const auto before = core::sampleCpuTimes();
     const auto result = runDenoiseJob(device, job, out);
@@ -235,6 +264,17 @@ const SweepPoint* resumable(const SweepResult& earlier, const SweepConfig& confi
         }
     }
     return p;
+}
+
+// The configuration's chain file: configs/<name>.json, or at another exposure
+// configs/x<exposure>/<name>.json with its tonemap scaled back (withExposure).
+std::string configFile(const SweepConfig& config, double exposure, OutputFolder& out) {
+    if (exposure == 1.0) return (out.path() / "configs" / (config.name + ".json")).string();
+    char folder[32];
+    std::snprintf(folder, sizeof folder, "x%g", exposure);
+    const auto path = out.file(fs::path("configs") / folder / (config.name + ".json"));
+    core::writeFileAtomically(path, withExposure(config.chainJson, exposure) + "\n");
+    return path.string();
 }
 
 void writeReport(const SweepResult& result, OutputFolder& out) {
@@ -283,7 +323,7 @@ int runSweep(std::span<const std::string_view> args) {
         result.sources.push_back(s.source);
         result.sources.back().shownFrame = scoredFrames(s.paths).back();
         for (const auto& config : result.configs) {
-            const auto chainFile = (out.path() / "configs" / (config.name + ".json")).string();
+            const auto chainFile = configFile(config, s.source.exposure, out);
             if (const SweepPoint* p = resumable(earlier, config, s, out)) {
                 ++reused;
                 result.points.push_back(*p);
@@ -307,6 +347,7 @@ int runSweep(std::span<const std::string_view> args) {
     core::writeFileAtomically(out.file("sweep.json"), sweepJson(result));
     out.finish();
     std::fputs(sweepTable(result).c_str(), stdout);
+    std::fputs(sweepExposureTable(result).c_str(), stdout);
     std::printf("\nwrote %s/report.html, sweep.json, sweep.csv and the plots\n", out.path().string().c_str());
     int code = kExitOk;
     for (const auto& p : result.points)

@@ -35,11 +35,20 @@ namespace {
 
 // Display values of an HDR image with the chains' default tonemap, for the noisy
 // baseline and the reference (the chains tonemap on the GPU with the same curve).
-RgbaImage tonemapped(const RgbaImage& hdr) {
+RgbaImage tonemapped(const RgbaImage& hdr, float exposure) {
     RgbaImage out = hdr;
-    const passes::TonemapSettings settings;
+    const passes::TonemapSettings settings{.exposure = 1.0f / exposure};
     for (size_t i = 0; i < size_t(out.width) * out.height; ++i) passes::tonemap(settings, &out.rgba[i * 4]);
     return out;
+}
+
+// Every radiance layer times `exposure` (the G-buffer stays): an exposure sweep's input.
+void scaleRadiance(tracer::Frame& frame, float exposure) {
+    using tracer::Channel;
+    for (const Channel c : {Channel::Color, Channel::Direct, Channel::Indirect, Channel::Emission, Channel::Matte,
+                            Channel::Glossy, Channel::Reference})
+        if (const auto it = frame.channels.find(c); it != frame.channels.end())
+            for (float& v : it->second.pixels) v *= exposure;
 }
 
 // The noisy radiance: `color`, else direct + indirect.
@@ -191,9 +200,10 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
     ProgressLine progress("denoise");
     uint32_t previousIndex = 0;
     for (size_t f = 0; f < o.framePaths.size(); ++f) {
-        const auto frame = tracer::readFrame(o.framePaths[f], {.requireChannels = false,
-                                                               .expectedWidth = size.width,
-                                                               .expectedHeight = size.height});
+        auto frame = tracer::readFrame(o.framePaths[f], {.requireChannels = false,
+                                                         .expectedWidth = size.width,
+                                                         .expectedHeight = size.height});
+        if (o.exposure != 1.0f) scaleRadiance(frame, o.exposure);
         // A gap in the indices is a cut: no history may carry across it.
         const bool gap = f > 0 && frame.index != previousIndex + 1;
         if (gap) {
@@ -204,7 +214,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
         previousIndex = frame.index;
         std::vector<RgbaImage> display(result.chains.size());
         const RgbaImage noisy = noisyRadiance(frame);
-        display[0] = tonemapped(noisy);
+        display[0] = tonemapped(noisy, o.exposure);
         writeOutputs(o, out, "noisy", frame, noisy, display[0]);
         for (size_t c = 0; c < runs.size(); ++c) {
             auto denoised = runs[c]->process(frame);
@@ -218,7 +228,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
         }
         const bool scored = frame.has(tracer::Channel::Reference);
         RgbaImage reference;
-        if (scored) reference = tonemapped(toRgba(frame.get(tracer::Channel::Reference)));
+        if (scored) reference = tonemapped(toRgba(frame.get(tracer::Channel::Reference)), o.exposure);
         if (scored && o.writeReferencePng) writePngOutput(o, out, "reference", frame.index, reference);
         for (size_t c = 0; c < result.chains.size(); ++c) {
             auto& chain = result.chains[c];

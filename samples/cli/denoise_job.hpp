@@ -30,6 +30,10 @@ struct DenoiseJobOptions {
     bool pngScoredOnly = false;          // PNGs only of frames with a reference
     bool writeReferencePng = false;      // <prefix>/reference/frame_<i>.png on scored frames
     bool quiet = false;                  // no progress line (the caller shows its own)
+    // Radiance layers (and the reference) are multiplied by this after reading; the
+    // noisy input and the reference are tonemapped with exposure 1 / this, as the
+    // chains must be (their tonemap.exposure): an exposure sweep (hush sweep --exposure).
+    float exposure = 1.0f;
 };
 
 struct ScoredFrame {

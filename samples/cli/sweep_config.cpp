@@ -137,4 +137,19 @@ std::vector<SweepConfig> expandConfigs(const std::vector<std::string>& chains, c
     return configs;
 }
 
+std::string withExposure(const std::string& chainJson, double exposure) {
+    core::Json document = core::parseJson(chainJson, "a sweep configuration");
+    auto divide = [&](core::Json& settings) {
+        const double current = settings.is_object() && settings.contains("exposure") ? settings["exposure"].get<double>() : 1.0;
+        settings["exposure"] = current / exposure;
+    };
+    if (document.contains("nodes")) {
+        for (auto& node : document["nodes"])
+            if (node.value("node", "") == "tonemap") divide(node["settings"]);
+    } else {
+        divide(document["settings"]["tonemap"]);
+    }
+    return document.dump(1);
+}
+
 } // namespace hush::cli

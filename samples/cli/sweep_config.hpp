@@ -38,4 +38,10 @@ struct SweepConfig {
 // range fails here, naming the knob. A knob for a chain not listed fails too.
 std::vector<SweepConfig> expandConfigs(const std::vector<std::string>& chains, const std::vector<Knob>& knobs);
 
+// The chain file `chainJson` for inputs whose radiance is multiplied by `exposure`:
+// its tonemap's exposure divided by it (the top-level "tonemap" of a built-in chain's
+// settings, or every "tonemap" node's), so that its display images are comparable
+// with the unscaled run's. An exposure sweep's configuration.
+std::string withExposure(const std::string& chainJson, double exposure);
+
 } // namespace hush::cli

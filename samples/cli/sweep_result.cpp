@@ -102,6 +102,7 @@ std::string sweepJson(const SweepResult& r) {
     for (const auto& s : r.sources)
         j["sources"].push_back({{"key", s.key}, {"description", s.description}, {"width", s.width},
                                 {"height", s.height}, {"frames", s.frames}, {"shown_frame", s.shownFrame},
+                                {"exposure", s.exposure}, {"family", s.family},
                                 {"noisy", qualityJson(s.noisy)}});
     j["configs"] = core::Json::array();
     for (const auto& c : r.configs)
@@ -137,6 +138,8 @@ SweepResult readSweepJson(const std::string& path) {
         SweepSource s{.key = o.require("key").string(), .description = o.require("description").string(),
                       .width = o.require("width").index(), .height = o.require("height").index(), .frames = o.require("frames").index()};
         s.shownFrame = o.require("shown_frame").index();
+        s.exposure = numberOf(o.require("exposure"));
+        s.family = o.require("family").string();
         s.noisy = readQuality(o.require("noisy"));
         o.finish();
         r.sources.push_back(s);
@@ -216,6 +219,50 @@ std::string sweepTable(const SweepResult& r) {
 } // namespace hush::cli
 
 namespace hush::cli {
+
+std::string sweepExposureTable(const SweepResult& r) {
+    std::vector<double> exposures;
+    for (const auto& s : r.sources)
+        if (std::find(exposures.begin(), exposures.end(), s.exposure) == exposures.end()) exposures.push_back(s.exposure);
+    if (exposures.size() < 2) return "";
+    std::sort(exposures.begin(), exposures.end());
+    char cell[160];
+    std::string out = "\nexposure stability: RMSE with radiance x exposure, over RMSE at exposure 1 "
+                      "(the reference and the tonemap scaled alike)\n| source | configuration |";
+    for (double e : exposures) std::snprintf(cell, sizeof cell, " x%g |", e), out += cell;
+    out += "\n| --- | --- |";
+    for (size_t i = 0; i < exposures.size(); ++i) out += " ---: |";
+    out += "\n";
+    std::vector<std::string> families;
+    for (const auto& s : r.sources)
+        if (std::find(families.begin(), families.end(), s.family) == families.end()) families.push_back(s.family);
+    for (const auto& family : families)
+        for (const std::string& config : [&] {
+                 std::vector<std::string> names{"noisy"};
+                 for (const auto& c : r.configs) names.push_back(c.name);
+                 return names;
+             }()) {
+            auto rmseAt = [&](double e) -> double {
+                for (const auto& s : r.sources)
+                    if (s.family == family && s.exposure == e) {
+                        if (config == "noisy") return s.noisy.rmse;
+                        if (const auto* p = r.find(s.key, config)) return p->quality.rmse;
+                    }
+                return -1.0;
+            };
+            const double base = rmseAt(1.0);
+            out += "| " + family + " | " + (config == "noisy" ? std::string("noisy input") : r.config(config).label) + " |";
+            for (double e : exposures) {
+                const double v = rmseAt(e);
+                if (v < 0.0) std::snprintf(cell, sizeof cell, " - |");
+                else if (base > 0.0) std::snprintf(cell, sizeof cell, " %.4f |", v / base);
+                else std::snprintf(cell, sizeof cell, " %.4g |", v);
+                out += cell;
+            }
+            out += "\n";
+        }
+    return out;
+}
 
 BudgetChoice chooseWithinBudget(const SweepResult& r, double budgetMs) {
     const auto& metric = sweepMetric(r.metric);

@@ -25,6 +25,10 @@ struct SweepSource {
     uint32_t width = 0, height = 0, frames = 0;
     SweepQuality noisy;       // the input, scored as the chains are
     uint32_t shownFrame = 0;  // the scored frame the report shows (the last)
+    // An exposure sweep's sources: the same frames with radiance times `exposure`;
+    // `family` is the key they share (the key at exposure 1).
+    double exposure = 1.0;
+    std::string family;
 };
 
 struct SweepPoint {
@@ -71,6 +75,9 @@ SweepResult readSweepJson(const std::string& path);
 std::string sweepCsv(const SweepResult& result);
 // The table printed at the end: every point, the front marked.
 std::string sweepTable(const SweepResult& result);
+// With several exposures: per source family and configuration, RMSE at each exposure
+// over RMSE at exposure 1 (empty when the sweep has one exposure).
+std::string sweepExposureTable(const SweepResult& result);
 
 // sweep_plot.cpp: <stem>.svg and <stem>.png, GPU ms against the metric, one point
 // per configuration, the front joined and highlighted, every point labelled.

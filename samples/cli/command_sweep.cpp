@@ -31,14 +31,16 @@ const std::string& usage() {
     static const std::string text =
         "usage: hush sweep [--scene <list> | --in <folder>] [--chain <list>] [--vary <knob>=<values>]...\n"
         "                  [--size <list>] [--frames <n>] [--reference-every <k>] [--reference-spp <n>]\n"
-        "                  [--exposure <list>] [--metric <m>] [--out <folder>] [--overwrite] [--threads <n>]\n"
-        "                  [--adapter <text>]\n"
+        "                  [--reference-pairs] [--exposure <list>] [--metric <m>] [--out <folder>]\n"
+        "                  [--overwrite] [--threads <n>] [--adapter <text>]\n"
         "\n"
         "Measures the speed/accuracy trade: runs every configuration (each chain with every\n"
         "combination of its knobs' values) over every frame source and reports GPU ms per frame\n"
         "(median), device memory and quality against the reference (RMSE, relative MSE, PSNR,\n"
-        "SSIM on the tonemapped images; temporal error), and the Pareto front: the\n"
-        "configurations no other beats on both time and quality. Writes\n"
+        "SSIM on the tonemapped images; temporal error; ghosting: RMSE in pixels disoccluded in\n"
+        "the last 4 frames over RMSE elsewhere; flicker, with --reference-pairs: temporal error\n"
+        "over the references' own), and the Pareto front: the configurations no other beats on\n"
+        "both time and quality. Writes\n"
         "  <out>/sweep.json, sweep.csv      every measurement, the fronts for every metric\n"
         "  <out>/plot-<source>.svg, .png    GPU ms against the metric, the front highlighted\n"
         "  <out>/report.html                plots, tables, crops: noisy | front | reference\n"
@@ -59,6 +61,8 @@ const std::string& usage() {
         "  --frames <n>            frames per source (default 16)\n"
         "  --reference-every <k>   a reference on every k-th frame, the last of each group (default 8)\n"
         "  --reference-spp <n>     samples per pixel of each reference (default 256)\n"
+        "  --reference-pairs       also a reference on the frame before each scored one: measures\n"
+        "                          flicker (temporal error over the references' own)\n"
         "  --exposure <list>       also run every source with its radiance (and reference) times\n"
         "                          each value, e.g. 1e-6,1e-3,1,1e3,1e6, the tonemap scaled back:\n"
         "                          a scale-equivariant chain scores the same at every exposure;\n"
@@ -113,6 +117,7 @@ SweepOptions parseOptions(std::span<const std::string_view> args) {
         else if (takeOption(args, i, "--threads", v)) o.sequence.settings.threads = parseCount(v, "--threads", 1, 1024);
         else if (takeOption(args, i, "--adapter", v)) o.adapter.nameContains = v, o.adapter.nameFromEnvironment = false;
         else if (args[i] == "--overwrite") o.overwrite = true;
+        else if (args[i] == "--reference-pairs") o.sequence.referencePairs = true;
         else unknownArgument("sweep", args[i]);
     }
     if (o.chains.empty()) throw Error(ErrorKind::InvalidArgument, "--chain names no chain");
@@ -156,7 +161,8 @@ SourceFrames renderedSource(const SweepOptions& o, const std::string& sceneArgum
     // The cache's name holds everything that makes the frames differ.
     const fs::path folder = fs::path("frames") / (key + "-" + std::to_string(o.sequence.frames) + "f-ref" +
                                                   std::to_string(o.sequence.referenceEvery) + "x" +
-                                                  std::to_string(o.sequence.settings.referenceSpp) + "spp-aa");
+                                                  std::to_string(o.sequence.settings.referenceSpp) + "spp-aa" +
+                                                  (o.sequence.referencePairs ? "-pairs" : ""));
     request.outFolder = (out.path() / folder).string();
     auto paths = fs::is_directory(request.outFolder) ? tracer::listFrames(request.outFolder) : std::vector<std::string>{};
     if (paths.size() != o.sequence.frames) {
@@ -225,6 +231,13 @@ SweepQuality qualityOf(const ChainResult& c) {
         q.ssim += s.metrics.ssim / c.scored.size();
     }
     for (double t : c.temporalError) q.temporal += t / c.temporalError.size();
+    auto mean = [](const std::vector<double>& v) {
+        double sum = 0.0;
+        for (double x : v) sum += x;
+        return v.empty() ? -1.0 : sum / double(v.size());
+    };
+    q.ghosting = mean(c.ghosting);
+    q.flicker = mean(c.flicker);
     return q;
 }
 

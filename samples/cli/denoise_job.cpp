@@ -16,6 +16,7 @@
 #include "output_folder.hpp"
 #include "png_file.hpp"
 #include "progress.hpp"
+#include "temporal_artifacts.hpp"
 
 namespace hush::cli {
 
@@ -104,6 +105,26 @@ template <class F> bool scoreOrWarn(DenoiseJobResult& result, const std::string&
         if (e.kind() != ErrorKind::InvalidArgument) throw;
         result.warnings.push_back(what + " left unscored: " + e.what());
         return false;
+    }
+}
+
+// Ghosting (with a disocclusion mask) and flicker (with last frame's reference) of
+// every chain's display on a scored frame.
+void scoreTemporalArtifacts(DenoiseJobResult& result, const std::vector<RgbaImage>& display,
+                            const std::vector<RgbaImage>& previous, const RgbaImage& reference,
+                            const RgbaImage* previousReference, const std::vector<uint8_t>& recent,
+                            passes::MetricsEvaluator& metrics) {
+    double referenceChange = 0.0;
+    if (previousReference) referenceChange = metrics.temporalError(reference.rgba, previousReference->rgba);
+    for (size_t c = 0; c < result.chains.size(); ++c) {
+        auto& chain = result.chains[c];
+        if (!recent.empty()) {
+            const double near = maskedRmse(display[c], reference, recent, true);
+            const double far = maskedRmse(display[c], reference, recent, false);
+            if (near >= 0.0 && far > 0.0) chain.ghosting.push_back(near / far);
+        }
+        if (referenceChange > 0.0 && !previous[c].rgba.empty())
+            chain.flicker.push_back(metrics.temporalError(display[c].rgba, previous[c].rgba) / referenceChange);
     }
 }
 
@@ -199,6 +220,8 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
     std::vector<RgbaImage> previous(result.chains.size());
     ProgressLine progress("denoise");
     uint32_t previousIndex = 0;
+    DisocclusionAge ages;
+    RgbaImage previousReference;   // last frame's, when it had one
     for (size_t f = 0; f < o.framePaths.size(); ++f) {
         auto frame = tracer::readFrame(o.framePaths[f], {.requireChannels = false,
                                                          .expectedWidth = size.width,
@@ -227,6 +250,9 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
             display[c + 1] = std::move(denoised.display);
         }
         const bool scored = frame.has(tracer::Channel::Reference);
+        const bool hasGeometry = frame.has(tracer::Channel::Motion) && frame.has(tracer::Channel::MeshId) &&
+                                 frame.has(tracer::Channel::Depth);
+        if (hasGeometry) ages.update(frame, f == 0 || gap);
         RgbaImage reference;
         if (scored) reference = tonemapped(toRgba(frame.get(tracer::Channel::Reference)), o.exposure);
         if (scored && o.writeReferencePng) writePngOutput(o, out, "reference", frame.index, reference);
@@ -240,6 +266,11 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
                     chain.temporalError.push_back(metrics.temporalError(display[c].rgba, previous[c].rgba));
                 });
         }
+        if (scored) {
+            const bool pair = f > 0 && !gap && !previousReference.rgba.empty();
+            scoreTemporalArtifacts(result, display, previous, reference, pair ? &previousReference : nullptr,
+                                   hasGeometry ? ages.recentMask() : std::vector<uint8_t>{}, metrics);
+        }
         if (scored && o.sideBySide) {
             std::vector<const RgbaImage*> panels;
             for (const auto& d : display) panels.push_back(&d);
@@ -248,6 +279,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
             writePngOutput(o, out, "side_by_side", frame.index, strip);
         }
         previous = std::move(display);
+        previousReference = scored ? std::move(reference) : RgbaImage{};
         if (!o.quiet)
             progress.update(double(f + 1) / double(o.framePaths.size()),
                         "frame " + std::to_string(f + 1) + "/" + std::to_string(o.framePaths.size()));

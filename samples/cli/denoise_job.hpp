@@ -48,6 +48,11 @@ struct ChainResult {
     std::vector<double> frameMs;
     std::vector<ScoredFrame> scored;
     std::vector<double> temporalError;             // frame i vs i-1, i >= 1
+    // temporal_artifacts.hpp: per scored frame, the RMSE in recently disoccluded
+    // pixels over the RMSE elsewhere; per pair of consecutive scored frames, the
+    // temporal error over the references' own.
+    std::vector<double> ghosting;
+    std::vector<double> flicker;
     uint64_t sanitizedPixels = 0;
     uint64_t nonFiniteOutputs = 0;                 // values in radiance and display (an error)
     std::vector<uint32_t> nonFiniteFrames;

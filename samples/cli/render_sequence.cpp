@@ -34,8 +34,9 @@ void checkHostMemory(const tracer::RenderSettings& settings) {
 double renderSequence(const tracer::Renderer& renderer, const SequenceRequest& r) {
     const auto& settings = r.settings;
     checkHostMemory(settings);
+    auto scored = [&](uint32_t i) { return (i - r.first) % r.referenceEvery == r.referenceOffset % r.referenceEvery; };
     auto hasReference = [&](uint32_t i) {
-        return settings.referenceSpp && (i - r.first) % r.referenceEvery == r.referenceOffset % r.referenceEvery;
+        return settings.referenceSpp && (scored(i) || (r.referencePairs && i + 1 < r.first + r.frames && scored(i + 1)));
     };
     // Progress in units of paths: a reference frame costs referenceSpp times more.
     auto frameCost = [&](uint32_t i) { return 1.0 + (hasReference(i) ? settings.referenceSpp : 0.0); };

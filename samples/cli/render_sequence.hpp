@@ -13,6 +13,7 @@ struct SequenceRequest {
     uint32_t frames = 16;
     uint32_t referenceEvery = 1;       // a reference on frames first + k * every + offset
     uint32_t referenceOffset = 0;
+    bool referencePairs = false;       // also a reference on the frame before each (flicker needs pairs)
     std::string outFolder;             // must exist
 };
 

@@ -77,7 +77,8 @@ double numberOf(const core::JsonValue& value) {
 
 core::Json qualityJson(const SweepQuality& q) {
     return {{"rmse", q.rmse}, {"relmse", q.relMse}, {"psnr", q.psnr}, {"ssim", q.ssim},
-            {"temporal", q.temporal}, {"scored_frames", q.scoredFrames}};
+            {"temporal", q.temporal}, {"ghosting", q.ghosting}, {"flicker", q.flicker},
+            {"scored_frames", q.scoredFrames}};
 }
 
 SweepQuality readQuality(const core::JsonValue& value) {
@@ -88,6 +89,8 @@ SweepQuality readQuality(const core::JsonValue& value) {
     q.psnr = numberOf(o.require("psnr"));
     q.ssim = numberOf(o.require("ssim"));
     q.temporal = numberOf(o.require("temporal"));
+    q.ghosting = numberOf(o.require("ghosting"));
+    q.flicker = numberOf(o.require("flicker"));
     q.scoredFrames = o.require("scored_frames").index();
     o.finish();
     return q;
@@ -171,7 +174,7 @@ SweepResult readSweepJson(const std::string& path) {
 
 std::string sweepCsv(const SweepResult& r) {
     std::string csv = "source,config,label,gpu_ms_median,other_processes_cpu_share,device_bytes,rmse,relmse,psnr,ssim,"
-                      "temporal,on_front_" + r.metric + "\n";
+                      "temporal,ghosting,flicker,on_front_" + r.metric + "\n";
     const auto& metric = sweepMetric(r.metric);
     for (const auto& s : r.sources) {
         const auto points = r.pointsOf(s.key);
@@ -179,15 +182,22 @@ std::string sweepCsv(const SweepResult& r) {
         for (size_t i = 0; i < points.size(); ++i) {
             const auto& p = *points[i];
             char line[512];
-            std::snprintf(line, sizeof line, "%s,%s,\"%s\",%.4f,%.3f,%llu,%.6f,%.6f,%.4f,%.6f,%.6f,%d\n",
+            std::snprintf(line, sizeof line, "%s,%s,\"%s\",%.4f,%.3f,%llu,%.6f,%.6f,%.4f,%.6f,%.6f,%.4f,%.4f,%d\n",
                           p.source.c_str(), p.config.c_str(), r.config(p.config).label.c_str(), p.gpuMs,
                           p.otherCpuShare, static_cast<unsigned long long>(p.deviceBytes), p.quality.rmse,
-                          p.quality.relMse, p.quality.psnr, p.quality.ssim, p.quality.temporal,
-                          std::find(front.begin(), front.end(), i) != front.end() ? 1 : 0);
+                          p.quality.relMse, p.quality.psnr, p.quality.ssim, p.quality.temporal, p.quality.ghosting,
+                          p.quality.flicker, std::find(front.begin(), front.end(), i) != front.end() ? 1 : 0);
             csv += line;
         }
     }
     return csv;
+}
+
+std::string ratioText(double value) {
+    if (value < 0.0) return "-";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", value);
+    return text;
 }
 
 std::string sweepTable(const SweepResult& r) {
@@ -196,20 +206,21 @@ std::string sweepTable(const SweepResult& r) {
     char line[640];
     for (const auto& s : r.sources) {
         std::snprintf(line, sizeof line, "\n%s (front on GPU ms and %s: *)\n| | configuration | settings | GPU ms | MiB | RMSE | "
-                      "relMSE | PSNR dB | SSIM | temporal |\n| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
-                      "| | noisy input | | - | - | %.4f | %.4f | %.2f | %.4f | %.5f |\n",
+                      "relMSE | PSNR dB | SSIM | temporal | ghosting | flicker |\n| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
+                      "| | noisy input | | - | - | %.4f | %.4f | %.2f | %.4f | %.5f | %s | %s |\n",
                       s.description.c_str(), metric.title, s.noisy.rmse, s.noisy.relMse, s.noisy.psnr, s.noisy.ssim,
-                      s.noisy.temporal);
+                      s.noisy.temporal, ratioText(s.noisy.ghosting).c_str(), ratioText(s.noisy.flicker).c_str());
         out += line;
         const auto points = r.pointsOf(s.key);
         const auto front = paretoFront(points, metric);
         for (size_t i = 0; i < points.size(); ++i) {
             const auto& p = *points[i];
             const bool onFront = std::find(front.begin(), front.end(), i) != front.end();
-            std::snprintf(line, sizeof line, "| %s | %s | %s | %.2f | %.1f | %.4f | %.4f | %.2f | %.4f | %.5f |\n",
+            std::snprintf(line, sizeof line, "| %s | %s | %s | %.2f | %.1f | %.4f | %.4f | %.2f | %.4f | %.5f | %s | %s |\n",
                           onFront ? "*" : "", p.config.c_str(), r.config(p.config).label.c_str(), p.gpuMs,
                           double(p.deviceBytes) / (1024.0 * 1024.0), p.quality.rmse, p.quality.relMse, p.quality.psnr,
-                          p.quality.ssim, p.quality.temporal);
+                          p.quality.ssim, p.quality.temporal, ratioText(p.quality.ghosting).c_str(),
+                          ratioText(p.quality.flicker).c_str());
             out += line;
         }
     }

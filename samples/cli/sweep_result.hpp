@@ -16,6 +16,9 @@ namespace hush::cli {
 struct SweepQuality {
     double rmse = 0.0, relMse = 0.0, psnr = 0.0, ssim = 0.0;   // means over the scored frames
     double temporal = 0.0;                                    // mean over consecutive pairs
+    // temporal_artifacts.hpp, means; -1 where not measured (flicker needs references
+    // on consecutive frames: --reference-pairs).
+    double ghosting = -1.0, flicker = -1.0;
     uint32_t scoredFrames = 0;
 };
 
@@ -73,6 +76,8 @@ struct SweepResult {
 std::string sweepJson(const SweepResult& result);
 SweepResult readSweepJson(const std::string& path);
 std::string sweepCsv(const SweepResult& result);
+// A ratio with three decimals, "-" when not measured (negative).
+std::string ratioText(double value);
 // The table printed at the end: every point, the front marked.
 std::string sweepTable(const SweepResult& result);
 // With several exposures: per source family and configuration, RMSE at each exposure

@@ -9,7 +9,7 @@ hush="$1"; work="$2"; checker="$3"
 source "$(dirname "$0")/cli_lib.sh"
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 
-args=(sweep --scene cornell --size 32x32 --frames 6 --reference-every 3 --reference-spp 8
+args=(sweep --scene cornell --size 32x32 --frames 6 --reference-every 3 --reference-spp 8 --reference-pairs
       --chain svgf,eaw --vary svgf.atrous.iterations=1,3 --vary eaw.atrous.iterations=2,4 --out out)
 "$hush" "${args[@]}" > first.txt 2> first.err || fail "hush sweep: $(cat first.err)"
 grep -q "svgf atrous.iterations=3" first.txt || fail "table lacks a configuration: $(cat first.txt)"

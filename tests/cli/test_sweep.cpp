@@ -97,6 +97,11 @@ TEST_CASE("a sweep's output: complete results, non-dominated fronts, plots and a
             CHECK(p->gpuMs > 0.0);
             CHECK(p->deviceBytes > 0);
             CHECK(p->quality.scoredFrames > 0);
+            // sweep.sh asks for reference pairs: both temporal artefacts are measured,
+            // and SVGF's history makes it steadier than the 1-spp input.
+            CHECK(p->quality.ghosting > 0.0);
+            CHECK(p->quality.flicker > 0.0);
+            if (result.config(p->config).chain == "svgf") CHECK(p->quality.flicker < source.noisy.flicker);
         }
         const SweepReportFiles files;
         CHECK(std::filesystem::file_size(folder / files.plotPng(source)) > 1000);

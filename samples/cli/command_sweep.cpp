@@ -6,6 +6,8 @@
 // interrupted sweep, run again with the same command, resumes where it stopped.
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <thread>
 
 #include <hush/core/error.hpp>
@@ -31,7 +33,7 @@ const std::string& usage() {
     static const std::string text =
         "usage: hush sweep [--scene <list> | --in <folder>] [--chain <list>] [--vary <knob>=<values>]...\n"
         "                  [--size <list>] [--frames <n>] [--reference-every <k>] [--reference-spp <n>]\n"
-        "                  [--reference-pairs] [--exposure <list>] [--metric <m>] [--out <folder>]\n"
+        "                  [--reference-pairs] [--lag] [--exposure <list>] [--metric <m>] [--out <folder>]\n"
         "                  [--overwrite] [--threads <n>] [--adapter <text>]\n"
         "\n"
         "Measures the speed/accuracy trade: runs every configuration (each chain with every\n"
@@ -63,6 +65,10 @@ const std::string& usage() {
         "  --reference-spp <n>     samples per pixel of each reference (default 256)\n"
         "  --reference-pairs       also a reference on the frame before each scored one: measures\n"
         "                          flicker (temporal error over the references' own)\n"
+        "  --lag                   also a reference on every frame of the second half, and each\n"
+        "                          configuration run again with the light doubled from its first\n"
+        "                          frame on: lag is the frames until its RMSE is within 10 % of\n"
+        "                          a run with the light doubled throughout\n"
         "  --exposure <list>       also run every source with its radiance (and reference) times\n"
         "                          each value, e.g. 1e-6,1e-3,1,1e3,1e6, the tonemap scaled back:\n"
         "                          a scale-equivariant chain scores the same at every exposure;\n"
@@ -82,6 +88,7 @@ struct SweepOptions {
     std::vector<Knob> knobs;
     std::vector<core::Size2D> sizes{{128, 128}};
     std::vector<double> exposures{1.0};
+    bool lag = false;
     SequenceRequest sequence;
     rhi::AdapterRequest adapter;
     bool overwrite = false;
@@ -118,6 +125,7 @@ SweepOptions parseOptions(std::span<const std::string_view> args) {
         else if (takeOption(args, i, "--adapter", v)) o.adapter.nameContains = v, o.adapter.nameFromEnvironment = false;
         else if (args[i] == "--overwrite") o.overwrite = true;
         else if (args[i] == "--reference-pairs") o.sequence.referencePairs = true;
+        else if (args[i] == "--lag") o.lag = true;
         else unknownArgument("sweep", args[i]);
     }
     if (o.chains.empty()) throw Error(ErrorKind::InvalidArgument, "--chain names no chain");
@@ -126,6 +134,7 @@ SweepOptions parseOptions(std::span<const std::string_view> args) {
                                                     " leaves no reference in " + std::to_string(o.sequence.frames) +
                                                     " frames: nothing to score");
     o.sequence.referenceOffset = o.sequence.referenceEvery - 1;   // the last frame of each group: it has history
+    if (o.lag) o.sequence.referencesFrom = o.sequence.frames / 2;   // the lighting step, and every frame after it
     return o;
 }
 
@@ -133,6 +142,11 @@ SweepOptions parseOptions(std::span<const std::string_view> args) {
 struct SourceFrames {
     SweepSource source;
     std::vector<std::string> paths;
+    // The frames the quality means are taken over: every k-th of a rendered source
+    // (not the extra references of --reference-pairs and --lag); empty: every frame
+    // with a reference (a frames folder).
+    std::set<uint32_t> scheduled;
+    uint32_t stepFrame = ~0u;   // --lag: the frame the lighting step starts at
 };
 
 std::vector<uint32_t> scoredFrames(const std::vector<std::string>& paths) {
@@ -162,7 +176,8 @@ SourceFrames renderedSource(const SweepOptions& o, const std::string& sceneArgum
     const fs::path folder = fs::path("frames") / (key + "-" + std::to_string(o.sequence.frames) + "f-ref" +
                                                   std::to_string(o.sequence.referenceEvery) + "x" +
                                                   std::to_string(o.sequence.settings.referenceSpp) + "spp-aa" +
-                                                  (o.sequence.referencePairs ? "-pairs" : ""));
+                                                  (o.sequence.referencePairs ? "-pairs" : "") +
+                                                  (o.lag ? "-lag" : ""));
     request.outFolder = (out.path() / folder).string();
     auto paths = fs::is_directory(request.outFolder) ? tracer::listFrames(request.outFolder) : std::vector<std::string>{};
     if (paths.size() != o.sequence.frames) {
@@ -177,6 +192,8 @@ SourceFrames renderedSource(const SweepOptions& o, const std::string& sceneArgum
     }
     for (const auto& p : paths) out.keep(folder / fs::path(p).filename());
     SourceFrames s{.paths = paths};
+    for (uint32_t i = o.sequence.referenceOffset; i < o.sequence.frames; i += o.sequence.referenceEvery) s.scheduled.insert(i);
+    if (o.lag) s.stepFrame = o.sequence.referencesFrom;
     s.source = {.key = key, .width = size.width, .height = size.height, .frames = uint32_t(paths.size())};
     s.source.description = "scene " + renderer.scene().name + ", " + std::to_string(size.width) + "x" +
                            std::to_string(size.height) + ", " + std::to_string(paths.size()) + " frames";
@@ -222,13 +239,16 @@ std::vector<SourceFrames> frameSources(const SweepOptions& o, OutputFolder& out)
     return sources;
 }
 
-SweepQuality qualityOf(const ChainResult& c) {
-    SweepQuality q{.scoredFrames = uint32_t(c.scored.size())};
-    for (const auto& s : c.scored) {
-        q.rmse += s.metrics.rmse / c.scored.size();
-        q.relMse += s.metrics.relMse / c.scored.size();
-        q.psnr += s.metrics.psnr / c.scored.size();
-        q.ssim += s.metrics.ssim / c.scored.size();
+SweepQuality qualityOf(const ChainResult& c, const std::set<uint32_t>& scheduled) {
+    std::vector<passes::ImageMetrics> scored;
+    for (const auto& s : c.scored)
+        if (scheduled.empty() || scheduled.count(s.frame)) scored.push_back(s.metrics);
+    SweepQuality q{.scoredFrames = uint32_t(scored.size())};
+    for (const auto& m : scored) {
+        q.rmse += m.rmse / scored.size();
+        q.relMse += m.relMse / scored.size();
+        q.psnr += m.psnr / scored.size();
+        q.ssim += m.ssim / scored.size();
     }
     for (double t : c.temporalError) q.temporal += t / c.temporalError.size();
     auto mean = [](const std::vector<double>& v) {
@@ -241,6 +261,22 @@ SweepQuality qualityOf(const ChainResult& c) {
     return q;
 }
 
+// Frames from the step until the stepped run's RMSE is within 10 % of the steady
+// run's (the light doubled from the first frame) on the same frame; both are scored
+// on every frame from the step on.
+void measureLag(const ChainResult& steady, const ChainResult& stepped, uint32_t stepFrame, SweepQuality& q) {
+    std::map<uint32_t, double> baseline;
+    for (const auto& s : steady.scored) baseline[s.frame] = s.metrics.rmse;
+    q.lagFrames = 0;
+    q.lag = -1.0;
+    for (const auto& s : stepped.scored) {
+        if (s.frame < stepFrame || !baseline.count(s.frame)) continue;
+        if (q.lag < 0.0 && s.metrics.rmse <= 1.1 * baseline[s.frame]) q.lag = double(s.frame - stepFrame);
+        ++q.lagFrames;
+    }
+    if (q.lag < 0.0 && q.lagFrames > 0) q.lag = double(q.lagFrames) + 1.0;   // not back within the frames observed
+}
+
 // Runs one configuration over one source; the noisy input's scores come with it.
 SweepPoint measure(const rhi::Device& device, const SourceFrames& s, const std::string& chainFile,
                    const std::string& config, OutputFolder& out, SweepQuality& noisy) {
@@ -251,11 +287,23 @@ SweepPoint measure(const rhi::Device& device, const SourceFrames& s, const std::
     const auto before = core::sampleCpuTimes();
     const auto result = runDenoiseJob(device, job, out);
     const auto& chain = result.chains.at(1);
-    noisy = qualityOf(result.chains.at(0));
-    return {.source = s.source.key, .config = config, .gpuMs = median(chain.frameMs),
-            .otherCpuShare = core::otherCpuShare(before, core::sampleCpuTimes()),
-            .deviceBytes = chain.transientBytes + chain.historyBytes, .quality = qualityOf(chain),
-            .nonFiniteOutputs = chain.nonFiniteOutputs};
+    noisy = qualityOf(result.chains.at(0), s.scheduled);
+    SweepPoint point{.source = s.source.key, .config = config, .gpuMs = median(chain.frameMs),
+                     .otherCpuShare = core::otherCpuShare(before, core::sampleCpuTimes()),
+                     .deviceBytes = chain.transientBytes + chain.historyBytes,
+                     .quality = qualityOf(chain, s.scheduled), .nonFiniteOutputs = chain.nonFiniteOutputs};
+    if (s.stepFrame != ~0u) {
+        // The light doubled from the step on, against the light doubled throughout (the
+        // steady state the stepped run should reach); no images written.
+        job.stepExposure = 2.0f;
+        job.writePng = job.writeReferencePng = false;
+        job.stepFrame = 0;
+        const auto doubled = runDenoiseJob(device, job, out);
+        job.stepFrame = s.stepFrame;
+        const auto stepped = runDenoiseJob(device, job, out);
+        measureLag(doubled.chains.at(1), stepped.chains.at(1), s.stepFrame, point.quality);
+    }
+    return point;
 }
 
 // The earlier run's result for this source and configuration, if its configuration

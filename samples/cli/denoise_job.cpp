@@ -227,6 +227,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
                                                          .expectedWidth = size.width,
                                                          .expectedHeight = size.height});
         if (o.exposure != 1.0f) scaleRadiance(frame, o.exposure);
+        if (frame.index >= o.stepFrame) scaleRadiance(frame, o.stepExposure);
         // A gap in the indices is a cut: no history may carry across it.
         const bool gap = f > 0 && frame.index != previousIndex + 1;
         if (gap) {

@@ -34,6 +34,11 @@ struct DenoiseJobOptions {
     // noisy input and the reference are tonemapped with exposure 1 / this, as the
     // chains must be (their tonemap.exposure): an exposure sweep (hush sweep --exposure).
     float exposure = 1.0f;
+    // A lighting change: from the frame of index stepFrame on, radiance and reference
+    // are multiplied by stepExposure as well (the tonemap is not compensated: the
+    // image brightens, as when every light brightens). hush sweep --lag.
+    uint32_t stepFrame = ~0u;
+    float stepExposure = 1.0f;
 };
 
 struct ScoredFrame {

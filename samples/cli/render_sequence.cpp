@@ -36,7 +36,8 @@ double renderSequence(const tracer::Renderer& renderer, const SequenceRequest& r
     checkHostMemory(settings);
     auto scored = [&](uint32_t i) { return (i - r.first) % r.referenceEvery == r.referenceOffset % r.referenceEvery; };
     auto hasReference = [&](uint32_t i) {
-        return settings.referenceSpp && (scored(i) || (r.referencePairs && i + 1 < r.first + r.frames && scored(i + 1)));
+        return settings.referenceSpp && (scored(i) || i >= r.referencesFrom ||
+                                         (r.referencePairs && i + 1 < r.first + r.frames && scored(i + 1)));
     };
     // Progress in units of paths: a reference frame costs referenceSpp times more.
     auto frameCost = [&](uint32_t i) { return 1.0 + (hasReference(i) ? settings.referenceSpp : 0.0); };

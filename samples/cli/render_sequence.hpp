@@ -14,6 +14,7 @@ struct SequenceRequest {
     uint32_t referenceEvery = 1;       // a reference on frames first + k * every + offset
     uint32_t referenceOffset = 0;
     bool referencePairs = false;       // also a reference on the frame before each (flicker needs pairs)
+    uint32_t referencesFrom = ~0u;     // and a reference on every frame from this index on (lag)
     std::string outFolder;             // must exist
 };
 

@@ -39,10 +39,10 @@ std::string crop(const SweepSource& s, const std::string& src, const std::string
 std::string table(const SweepResult& r, const SweepSource& s, const std::vector<const SweepPoint*>& points,
                   const std::vector<size_t>& front) {
     std::string html = "<table><tr><th></th><th>configuration</th><th>GPU ms</th><th>MiB</th><th>RMSE</th>"
-                       "<th>relMSE</th><th>PSNR dB</th><th>SSIM</th><th>temporal</th><th>ghosting</th><th>flicker</th></tr>\n";
+                       "<th>relMSE</th><th>PSNR dB</th><th>SSIM</th><th>temporal</th><th>ghosting</th><th>flicker</th><th>lag</th></tr>\n";
     char row[1024];
     std::snprintf(row, sizeof row, "<tr><td></td><td>noisy input</td><td>-</td><td>-</td><td>%.4f</td><td>%.4f</td>"
-                  "<td>%.2f</td><td>%.4f</td><td>%.5f</td><td>%s</td><td>%s</td></tr>\n",
+                  "<td>%.2f</td><td>%.4f</td><td>%.5f</td><td>%s</td><td>%s</td><td>-</td></tr>\n",
                   s.noisy.rmse, s.noisy.relMse, s.noisy.psnr, s.noisy.ssim, s.noisy.temporal,
                   ratioText(s.noisy.ghosting).c_str(), ratioText(s.noisy.flicker).c_str());
     html += row;
@@ -50,11 +50,12 @@ std::string table(const SweepResult& r, const SweepSource& s, const std::vector<
         const auto& p = *points[i];
         const bool onFront = std::find(front.begin(), front.end(), i) != front.end();
         std::snprintf(row, sizeof row, "<tr%s><td>%s</td><td>%s<br><small>%s</small></td><td>%.2f</td><td>%.1f</td>"
-                      "<td>%.4f</td><td>%.4f</td><td>%.2f</td><td>%.4f</td><td>%.5f</td><td>%s</td><td>%s</td></tr>\n",
+                      "<td>%.4f</td><td>%.4f</td><td>%.2f</td><td>%.4f</td><td>%.5f</td><td>%s</td><td>%s</td><td>%s</td></tr>\n",
                       onFront ? " class=\"front\"" : "", onFront ? "&#9733;" : "", escape(p.config).c_str(),
                       escape(r.config(p.config).label).c_str(), p.gpuMs, double(p.deviceBytes) / (1024.0 * 1024.0),
                       p.quality.rmse, p.quality.relMse, p.quality.psnr, p.quality.ssim, p.quality.temporal,
-                      ratioText(p.quality.ghosting).c_str(), ratioText(p.quality.flicker).c_str());
+                      ratioText(p.quality.ghosting).c_str(), ratioText(p.quality.flicker).c_str(),
+                      escape(lagText(p.quality)).c_str());
         html += row;
     }
     return html + "</table>\n";

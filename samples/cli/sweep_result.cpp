@@ -78,6 +78,7 @@ double numberOf(const core::JsonValue& value) {
 core::Json qualityJson(const SweepQuality& q) {
     return {{"rmse", q.rmse}, {"relmse", q.relMse}, {"psnr", q.psnr}, {"ssim", q.ssim},
             {"temporal", q.temporal}, {"ghosting", q.ghosting}, {"flicker", q.flicker},
+            {"lag", q.lag}, {"lag_frames", q.lagFrames},
             {"scored_frames", q.scoredFrames}};
 }
 
@@ -91,6 +92,8 @@ SweepQuality readQuality(const core::JsonValue& value) {
     q.temporal = numberOf(o.require("temporal"));
     q.ghosting = numberOf(o.require("ghosting"));
     q.flicker = numberOf(o.require("flicker"));
+    q.lag = numberOf(o.require("lag"));
+    q.lagFrames = o.require("lag_frames").index();
     q.scoredFrames = o.require("scored_frames").index();
     o.finish();
     return q;
@@ -174,7 +177,7 @@ SweepResult readSweepJson(const std::string& path) {
 
 std::string sweepCsv(const SweepResult& r) {
     std::string csv = "source,config,label,gpu_ms_median,other_processes_cpu_share,device_bytes,rmse,relmse,psnr,ssim,"
-                      "temporal,ghosting,flicker,on_front_" + r.metric + "\n";
+                      "temporal,ghosting,flicker,lag,lag_frames,on_front_" + r.metric + "\n";
     const auto& metric = sweepMetric(r.metric);
     for (const auto& s : r.sources) {
         const auto points = r.pointsOf(s.key);
@@ -182,11 +185,12 @@ std::string sweepCsv(const SweepResult& r) {
         for (size_t i = 0; i < points.size(); ++i) {
             const auto& p = *points[i];
             char line[512];
-            std::snprintf(line, sizeof line, "%s,%s,\"%s\",%.4f,%.3f,%llu,%.6f,%.6f,%.4f,%.6f,%.6f,%.4f,%.4f,%d\n",
+            std::snprintf(line, sizeof line, "%s,%s,\"%s\",%.4f,%.3f,%llu,%.6f,%.6f,%.4f,%.6f,%.6f,%.4f,%.4f,%.0f,%u,%d\n",
                           p.source.c_str(), p.config.c_str(), r.config(p.config).label.c_str(), p.gpuMs,
                           p.otherCpuShare, static_cast<unsigned long long>(p.deviceBytes), p.quality.rmse,
                           p.quality.relMse, p.quality.psnr, p.quality.ssim, p.quality.temporal, p.quality.ghosting,
-                          p.quality.flicker, std::find(front.begin(), front.end(), i) != front.end() ? 1 : 0);
+                          p.quality.flicker, p.quality.lag, p.quality.lagFrames,
+                          std::find(front.begin(), front.end(), i) != front.end() ? 1 : 0);
             csv += line;
         }
     }
@@ -200,14 +204,20 @@ std::string ratioText(double value) {
     return text;
 }
 
+std::string lagText(const SweepQuality& q) {
+    if (q.lag < 0.0) return "-";
+    if (q.lag > q.lagFrames) return "> " + std::to_string(q.lagFrames);
+    return std::to_string(int(q.lag));
+}
+
 std::string sweepTable(const SweepResult& r) {
     const auto& metric = sweepMetric(r.metric);
     std::string out;
     char line[640];
     for (const auto& s : r.sources) {
         std::snprintf(line, sizeof line, "\n%s (front on GPU ms and %s: *)\n| | configuration | settings | GPU ms | MiB | RMSE | "
-                      "relMSE | PSNR dB | SSIM | temporal | ghosting | flicker |\n| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
-                      "| | noisy input | | - | - | %.4f | %.4f | %.2f | %.4f | %.5f | %s | %s |\n",
+                      "relMSE | PSNR dB | SSIM | temporal | ghosting | flicker | lag |\n| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
+                      "| | noisy input | | - | - | %.4f | %.4f | %.2f | %.4f | %.5f | %s | %s | - |\n",
                       s.description.c_str(), metric.title, s.noisy.rmse, s.noisy.relMse, s.noisy.psnr, s.noisy.ssim,
                       s.noisy.temporal, ratioText(s.noisy.ghosting).c_str(), ratioText(s.noisy.flicker).c_str());
         out += line;
@@ -216,11 +226,11 @@ std::string sweepTable(const SweepResult& r) {
         for (size_t i = 0; i < points.size(); ++i) {
             const auto& p = *points[i];
             const bool onFront = std::find(front.begin(), front.end(), i) != front.end();
-            std::snprintf(line, sizeof line, "| %s | %s | %s | %.2f | %.1f | %.4f | %.4f | %.2f | %.4f | %.5f | %s | %s |\n",
+            std::snprintf(line, sizeof line, "| %s | %s | %s | %.2f | %.1f | %.4f | %.4f | %.2f | %.4f | %.5f | %s | %s | %s |\n",
                           onFront ? "*" : "", p.config.c_str(), r.config(p.config).label.c_str(), p.gpuMs,
                           double(p.deviceBytes) / (1024.0 * 1024.0), p.quality.rmse, p.quality.relMse, p.quality.psnr,
                           p.quality.ssim, p.quality.temporal, ratioText(p.quality.ghosting).c_str(),
-                          ratioText(p.quality.flicker).c_str());
+                          ratioText(p.quality.flicker).c_str(), lagText(p.quality).c_str());
             out += line;
         }
     }

@@ -19,6 +19,12 @@ struct SweepQuality {
     // temporal_artifacts.hpp, means; -1 where not measured (flicker needs references
     // on consecutive frames: --reference-pairs).
     double ghosting = -1.0, flicker = -1.0;
+    // With --lag: frames after a lighting step (every light doubled) until the RMSE is
+    // within 10 % of the same configuration's with the light doubled throughout (0: at
+    // once); lagFrames frames
+    // were observed, and lag > lagFrames means not within them. -1: not measured.
+    double lag = -1.0;
+    uint32_t lagFrames = 0;
     uint32_t scoredFrames = 0;
 };
 
@@ -78,6 +84,8 @@ SweepResult readSweepJson(const std::string& path);
 std::string sweepCsv(const SweepResult& result);
 // A ratio with three decimals, "-" when not measured (negative).
 std::string ratioText(double value);
+// A lag in frames: "3", "> 8" (not back within the frames observed), "-".
+std::string lagText(const SweepQuality& q);
 // The table printed at the end: every point, the front marked.
 std::string sweepTable(const SweepResult& result);
 // With several exposures: per source family and configuration, RMSE at each exposure

@@ -9,7 +9,7 @@ hush="$1"; work="$2"; checker="$3"
 source "$(dirname "$0")/cli_lib.sh"
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 
-args=(sweep --scene cornell --size 32x32 --frames 6 --reference-every 3 --reference-spp 8 --reference-pairs
+args=(sweep --scene cornell --size 32x32 --frames 6 --reference-every 3 --reference-spp 8 --reference-pairs --lag
       --chain svgf,eaw --vary svgf.atrous.iterations=1,3 --vary eaw.atrous.iterations=2,4 --out out)
 "$hush" "${args[@]}" > first.txt 2> first.err || fail "hush sweep: $(cat first.err)"
 grep -q "svgf atrous.iterations=3" first.txt || fail "table lacks a configuration: $(cat first.txt)"
@@ -38,12 +38,12 @@ expect_exit 2 "no configuration of the sweep runs within 1e-06 ms" denoise --in 
 nothing_written budget2
 echo "ok: budget mode"
 
-# Interrupted part way (the device lost at its 300th submission: two of four configurations done), a sweep keeps what it
+# Interrupted part way (the device lost at its 1500th submission: two of four configurations done), a sweep keeps what it
 # finished: sweep.json says "complete": false, and the same command, rerun without
 # --overwrite, measures only what is missing.
 args[${#args[@]}-1]=int
 set +e
-HUSH_INJECT_FAULT=device-lost:300 "$hush" "${args[@]}" > int1.txt 2> int1.err
+HUSH_INJECT_FAULT=device-lost:1500 "$hush" "${args[@]}" > int1.txt 2> int1.err
 code=$?
 set -e
 [[ $code == 2 ]] && grep -q "device-lost" int1.err || fail "interrupted sweep: exit $code: $(cat int1.err)"

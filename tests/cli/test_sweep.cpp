@@ -102,6 +102,10 @@ TEST_CASE("a sweep's output: complete results, non-dominated fronts, plots and a
             CHECK(p->quality.ghosting > 0.0);
             CHECK(p->quality.flicker > 0.0);
             if (result.config(p->config).chain == "svgf") CHECK(p->quality.flicker < source.noisy.flicker);
+            // And --lag: EAW keeps no history, so it follows a lighting step at once.
+            CHECK(p->quality.lag >= 0.0);
+            CHECK(p->quality.lagFrames > 0);
+            if (result.config(p->config).chain == "eaw") CHECK(p->quality.lag == 0.0);
         }
         const SweepReportFiles files;
         CHECK(std::filesystem::file_size(folder / files.plotPng(source)) > 1000);

@@ -98,6 +98,10 @@ std::string reportJson(const DenoiseJobResult& r, const std::string& adapterName
         cj["nonFiniteFrames"] = c.nonFiniteFrames;
         cj["temporalErrorMean"] = mean(c.temporalError);
         cj["temporalError"] = c.temporalError;
+        // Per scored frame (temporal_artifacts.hpp): recently disoccluded over elsewhere
+        // RMSE; per pair of consecutive references, temporal error over theirs.
+        cj["ghosting"] = c.ghosting;
+        cj["flicker"] = c.flicker;
         if (!c.scored.empty()) {
             cj["quality"] = {{"rmse", meanOf(c.scored, [](auto& m) { return m.rmse; })},
                              {"relMse", meanOf(c.scored, [](auto& m) { return m.relMse; })},

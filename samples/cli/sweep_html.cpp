@@ -75,7 +75,7 @@ std::string sweepHtml(const SweepResult& r, const SweepReportFiles& files) {
         "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>hush sweep</title><style>\n"
         "body{font-family:sans-serif;margin:2em;color:#222}table{border-collapse:collapse;margin:1em 0}"
         "td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}td:nth-child(2){text-align:left}"
-        "tr.front{background:#fff6d5}figure{display:inline-block;margin:0 8px 8px 0}"
+        "tr.front{background:#fff6d5}figure{display:inline-block;vertical-align:top;margin:0 8px 8px 0}"
         ".crop{overflow:hidden;position:relative}.crop img{position:absolute;image-rendering:pixelated}"
         "figcaption{font-size:12px;max-width:200px}\n</style></head><body>\n<h1>hush sweep</h1>\n";
     html += "<p>GPU time against " + std::string(metric.title) +

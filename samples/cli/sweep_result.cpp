@@ -90,10 +90,11 @@ SweepQuality readQuality(const core::JsonValue& value) {
     q.psnr = numberOf(o.require("psnr"));
     q.ssim = numberOf(o.require("ssim"));
     q.temporal = numberOf(o.require("temporal"));
-    q.ghosting = numberOf(o.require("ghosting"));
-    q.flicker = numberOf(o.require("flicker"));
-    q.lag = numberOf(o.require("lag"));
-    q.lagFrames = o.require("lag_frames").index();
+    // Absent in the files of earlier versions: not measured.
+    if (const auto v = o.get("ghosting")) q.ghosting = numberOf(*v);
+    if (const auto v = o.get("flicker")) q.flicker = numberOf(*v);
+    if (const auto v = o.get("lag")) q.lag = numberOf(*v);
+    if (const auto v = o.get("lag_frames")) q.lagFrames = v->index();
     q.scoredFrames = o.require("scored_frames").index();
     o.finish();
     return q;
@@ -144,8 +145,9 @@ SweepResult readSweepJson(const std::string& path) {
         SweepSource s{.key = o.require("key").string(), .description = o.require("description").string(),
                       .width = o.require("width").index(), .height = o.require("height").index(), .frames = o.require("frames").index()};
         s.shownFrame = o.require("shown_frame").index();
-        s.exposure = numberOf(o.require("exposure"));
-        s.family = o.require("family").string();
+        s.exposure = 1.0, s.family = s.key;   // absent in earlier versions' files
+        if (const auto v = o.get("exposure")) s.exposure = numberOf(*v);
+        if (const auto v = o.get("family")) s.family = v->string();
         s.noisy = readQuality(o.require("noisy"));
         o.finish();
         r.sources.push_back(s);

@@ -3,7 +3,9 @@
 #include "frame_upload.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <map>
+#include <tuple>
 
 #include <hush/passes/common/tonemap.hpp>
 #include <hush/tracer/builtin_scenes.hpp>
@@ -32,41 +34,37 @@ std::vector<tracer::Frame> renderCornell(uint32_t size) {
 }
 } // namespace
 
-const std::vector<tracer::Frame>& sceneSequence(const std::string& scene, uint32_t size) {
-    static std::map<std::pair<std::string, uint32_t>, std::vector<tracer::Frame>> cache;
-    auto& frames = cache[{scene, size}];
+namespace {
+// 16 frames of a built-in scene's path with every layer, a reference on `scored`;
+// rendered once per (scene, size, kind) in this process.
+const std::vector<tracer::Frame>& cachedSequence(const std::string& scene, uint32_t size, uint32_t referenceSpp,
+                                                 bool antialiased, std::initializer_list<uint32_t> scored) {
+    static std::map<std::tuple<std::string, uint32_t, bool>, std::vector<tracer::Frame>> cache;
+    auto& frames = cache[{scene, size, antialiased}];
     if (!frames.empty()) return frames;
     const tracer::Renderer renderer(tracer::makeBuiltinScene(scene));
     tracer::RenderSettings settings;
     settings.width = settings.height = size;
-    settings.referenceSpp = 128;
+    settings.referenceSpp = referenceSpp;
+    settings.antialiasedReference = antialiased;
     for (uint32_t i = 0; i < 16; ++i) {
         settings.channels.clear();
         for (const auto channel : tracer::kAllChannels)
             if (channel != tracer::Channel::Reference) settings.channels.push_back(channel);
-        if (i == 7 || i == 11 || i == 15) settings.channels.push_back(tracer::Channel::Reference);
+        if (std::find(scored.begin(), scored.end(), i) != scored.end())
+            settings.channels.push_back(tracer::Channel::Reference);
         frames.push_back(renderer.render(i, settings));
     }
     return frames;
 }
+} // namespace
+
+const std::vector<tracer::Frame>& sceneSequence(const std::string& scene, uint32_t size) {
+    return cachedSequence(scene, size, 128, false, {7, 11, 15});
+}
 
 const std::vector<tracer::Frame>& benchSequence(const std::string& scene, uint32_t size) {
-    static std::map<std::pair<std::string, uint32_t>, std::vector<tracer::Frame>> cache;
-    auto& frames = cache[{scene, size}];
-    if (!frames.empty()) return frames;
-    const tracer::Renderer renderer(tracer::makeBuiltinScene(scene));
-    tracer::RenderSettings settings;
-    settings.width = settings.height = size;
-    settings.referenceSpp = 256;
-    settings.antialiasedReference = true;
-    for (uint32_t i = 0; i < 16; ++i) {
-        settings.channels.clear();
-        for (const auto channel : tracer::kAllChannels)
-            if (channel != tracer::Channel::Reference) settings.channels.push_back(channel);
-        if (i == 7 || i == 15) settings.channels.push_back(tracer::Channel::Reference);
-        frames.push_back(renderer.render(i, settings));
-    }
-    return frames;
+    return cachedSequence(scene, size, 256, true, {7, 15});
 }
 
 const std::vector<tracer::Frame>& cornellSequence() {

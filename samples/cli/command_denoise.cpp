@@ -13,6 +13,7 @@
 #include "denoise_job.hpp"
 #include "output_folder.hpp"
 #include "scene_argument.hpp"
+#include "sweep_measure.hpp"
 #include "sweep_result.hpp"
 
 namespace hush::cli {
@@ -28,7 +29,7 @@ const std::string& usage() {
     static const std::string text =
         "usage: hush denoise --in <folder> --out <folder> [--chain <list>] [--first <i>] [--frames <n>]\n"
         "                    [--no-exr] [--no-png] [--side-by-side] [--dump-graph] [--overwrite]\n"
-        "                    [--adapter <text>] [--budget-ms <ms> --sweep <sweep.json>]\n"
+        "                    [--adapter <text>] [--budget-ms <ms> [--sweep <sweep.json>]]\n"
         "\n"
         "Runs denoising chains over the frames of <folder> (docs/frame-format.md), in index\n"
         "order. Writes <out>/<chain>/frame_<i>.exr (filtered radiance, layer 'color') and .png\n"
@@ -50,10 +51,11 @@ const std::string& usage() {
         "  --side-by-side    <out>/side_by_side/frame_<i>.png: noisy | chains | reference\n"
         "  --dump-graph      <out>/graph.<chain>.dot and .json: each compiled graph\n"
         "  --adapter <text>  use the first adapter whose name contains <text>\n"
-        "  --budget-ms <ms> --sweep <sweep.json>\n"
+        "  --budget-ms <ms> [--sweep <sweep.json>]\n"
         "                    instead of --chain: the configuration of that sweep (hush sweep) with\n"
         "                    the best quality whose GPU time is within <ms> on every source; says\n"
-        "                    which and why\n"
+        "                    which and why. Without --sweep: the built-in chains at their defaults,\n"
+        "                    measured first on these frames (some must carry a reference)\n"
         "\n"
         "node types for chain files:\n";
     static const std::string full = text + passes::describeChainNodes();
@@ -65,6 +67,23 @@ std::string chainWithinBudget(const std::string& sweepPath, double budgetMs) {
     const auto choice = chooseWithinBudget(readSweepJson(sweepPath), budgetMs);
     std::printf("hush denoise: budget %.3g ms: %s\n", budgetMs, choice.why.c_str());
     return (std::filesystem::path(sweepPath).parent_path() / "configs" / (choice.config + ".json")).string();
+}
+
+// Budget mode without a sweep: measures the built-in chains on the frames themselves
+// (quickSweep), then denoises with the best one within the budget.
+int runWithinBudget(DenoiseJobOptions options, const rhi::AdapterRequest& request, double budgetMs) {
+    OutputFolder out(options.outFolder, "denoise", options.overwrite);
+    {
+        auto instance = rhi::Instance::create({});
+        auto device = instance.requestAdapter(request).createDevice({.label = "hush denoise --budget-ms"});
+        std::printf("hush denoise: budget %.3g ms without --sweep: measuring the built-in chains on the frames\n",
+                    budgetMs);
+        std::fflush(stdout);
+        const auto choice = chooseWithinBudget(quickSweep(device, options.framePaths, out), budgetMs);
+        std::printf("hush denoise: budget %.3g ms: %s\n", budgetMs, choice.why.c_str());
+        options.chains = {choice.config};
+    }
+    return runDenoiseJobAndReport(options, request, &out);
 }
 
 int runDenoise(std::span<const std::string_view> args) {
@@ -94,12 +113,8 @@ int runDenoise(std::span<const std::string_view> args) {
     }
     if (in.empty()) throw Error(ErrorKind::InvalidArgument, "hush denoise needs --in <folder of frames>");
     if (options.outFolder.empty()) throw Error(ErrorKind::InvalidArgument, "hush denoise needs --out <folder>");
-    if ((budgetMs > 0.0) != !sweep.empty())
-        throw Error(ErrorKind::InvalidArgument, "--budget-ms and --sweep go together: the budget picks from a sweep's "
-                                                "results (hush sweep writes sweep.json)");
-    if (budgetMs > 0.0) chains = chainWithinBudget(sweep, budgetMs);
-    options.chains = splitList(chains);
-    if (options.chains.empty()) throw Error(ErrorKind::InvalidArgument, "--chain names no chain");
+    if (!sweep.empty() && budgetMs == 0.0)
+        throw Error(ErrorKind::InvalidArgument, "--sweep is read by --budget-ms, which is missing");
     for (const auto& path : tracer::listFrames(in)) {
         const auto index = frameIndexOf(path);
         if (index >= first && options.framePaths.size() < count) options.framePaths.push_back(path);
@@ -107,6 +122,10 @@ int runDenoise(std::span<const std::string_view> args) {
     if (options.framePaths.empty())
         throw Error(ErrorKind::NotFound, "'" + in + "' holds no frame with index >= " + std::to_string(first));
     options.dumpGraph = dump;
+    if (budgetMs > 0.0 && sweep.empty()) return runWithinBudget(options, request, budgetMs);
+    if (budgetMs > 0.0) chains = chainWithinBudget(sweep, budgetMs);
+    options.chains = splitList(chains);
+    if (options.chains.empty()) throw Error(ErrorKind::InvalidArgument, "--chain names no chain");
     return runDenoiseJobAndReport(options, request);
 }
 

@@ -22,6 +22,7 @@
 #include "render_sequence.hpp"
 #include "scene_argument.hpp"
 #include "sweep_config.hpp"
+#include "sweep_measure.hpp"
 #include "sweep_result.hpp"
 
 namespace hush::cli {
@@ -139,26 +140,6 @@ SweepOptions parseOptions(std::span<const std::string_view> args) {
 }
 
 // One frame source: its key, and its frames (rendered into the cache when missing).
-struct SourceFrames {
-    SweepSource source;
-    std::vector<std::string> paths;
-    // The frames the quality means are taken over: every k-th of a rendered source
-    // (not the extra references of --reference-pairs and --lag); empty: every frame
-    // with a reference (a frames folder).
-    std::set<uint32_t> scheduled;
-    uint32_t stepFrame = ~0u;   // --lag: the frame the lighting step starts at
-};
-
-std::vector<uint32_t> scoredFrames(const std::vector<std::string>& paths) {
-    std::vector<uint32_t> scored;
-    for (const auto& path : paths) {
-        const auto info = tracer::readFrameInfo(path);
-        if (std::find(info.layers.begin(), info.layers.end(), tracer::Channel::Reference) != info.layers.end())
-            scored.push_back(frameIndexOf(path));
-    }
-    return scored;
-}
-
 SourceFrames renderedSource(const SweepOptions& o, const std::string& sceneArgument, core::Size2D size,
                             OutputFolder& out) {
     const tracer::Renderer renderer(loadSceneArgument(sceneArgument));
@@ -237,73 +218,6 @@ std::vector<SourceFrames> frameSources(const SweepOptions& o, OutputFolder& out)
             out.checkpoint();
         }
     return sources;
-}
-
-SweepQuality qualityOf(const ChainResult& c, const std::set<uint32_t>& scheduled) {
-    std::vector<passes::ImageMetrics> scored;
-    for (const auto& s : c.scored)
-        if (scheduled.empty() || scheduled.count(s.frame)) scored.push_back(s.metrics);
-    SweepQuality q{.scoredFrames = uint32_t(scored.size())};
-    for (const auto& m : scored) {
-        q.rmse += m.rmse / scored.size();
-        q.relMse += m.relMse / scored.size();
-        q.psnr += m.psnr / scored.size();
-        q.ssim += m.ssim / scored.size();
-    }
-    for (double t : c.temporalError) q.temporal += t / c.temporalError.size();
-    auto mean = [](const std::vector<double>& v) {
-        double sum = 0.0;
-        for (double x : v) sum += x;
-        return v.empty() ? -1.0 : sum / double(v.size());
-    };
-    q.ghosting = mean(c.ghosting);
-    q.flicker = mean(c.flicker);
-    return q;
-}
-
-// Frames from the step until the stepped run's RMSE is within 10 % of the steady
-// run's (the light doubled from the first frame) on the same frame; both are scored
-// on every frame from the step on.
-void measureLag(const ChainResult& steady, const ChainResult& stepped, uint32_t stepFrame, SweepQuality& q) {
-    std::map<uint32_t, double> baseline;
-    for (const auto& s : steady.scored) baseline[s.frame] = s.metrics.rmse;
-    q.lagFrames = 0;
-    q.lag = -1.0;
-    for (const auto& s : stepped.scored) {
-        if (s.frame < stepFrame || !baseline.count(s.frame)) continue;
-        if (q.lag < 0.0 && s.metrics.rmse <= 1.1 * baseline[s.frame]) q.lag = double(s.frame - stepFrame);
-        ++q.lagFrames;
-    }
-    if (q.lag < 0.0 && q.lagFrames > 0) q.lag = double(q.lagFrames) + 1.0;   // not back within the frames observed
-}
-
-// Runs one configuration over one source; the noisy input's scores come with it.
-SweepPoint measure(const rhi::Device& device, const SourceFrames& s, const std::string& chainFile,
-                   const std::string& config, OutputFolder& out, SweepQuality& noisy) {
-    DenoiseJobOptions job{.chains = {chainFile}, .framePaths = s.paths, .writeExr = false};
-    job.outputPrefix = "runs/" + s.source.key;
-    job.exposure = float(s.source.exposure);
-    job.pngScoredOnly = job.writeReferencePng = job.quiet = true;
-    const auto before = core::sampleCpuTimes();
-    const auto result = runDenoiseJob(device, job, out);
-    const auto& chain = result.chains.at(1);
-    noisy = qualityOf(result.chains.at(0), s.scheduled);
-    SweepPoint point{.source = s.source.key, .config = config, .gpuMs = median(chain.frameMs),
-                     .otherCpuShare = core::otherCpuShare(before, core::sampleCpuTimes()),
-                     .deviceBytes = chain.transientBytes + chain.historyBytes,
-                     .quality = qualityOf(chain, s.scheduled), .nonFiniteOutputs = chain.nonFiniteOutputs};
-    if (s.stepFrame != ~0u) {
-        // The light doubled from the step on, against the light doubled throughout (the
-        // steady state the stepped run should reach); no images written.
-        job.stepExposure = 2.0f;
-        job.writePng = job.writeReferencePng = false;
-        job.stepFrame = 0;
-        const auto doubled = runDenoiseJob(device, job, out);
-        job.stepFrame = s.stepFrame;
-        const auto stepped = runDenoiseJob(device, job, out);
-        measureLag(doubled.chains.at(1), stepped.chains.at(1), s.stepFrame, point.quality);
-    }
-    return point;
 }
 
 // The earlier run's result for this source and configuration, if its configuration

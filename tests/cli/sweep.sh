@@ -67,3 +67,16 @@ rows=$(grep -E "^\| cornell-32x32 \| (svgf|bmfr|mara) \(its settings\)" exposure
 awk -F'|' '{ for (i = 4; i < NF; ++i) if ($i + 0 < 0.999 || $i + 0 > 1.001) { print "out of bounds: " $0; exit 1 } }' \
     <<< "$rows" || fail "a scale-equivariant chain changed with exposure: $rows"
 echo "ok: svgf, bmfr and mara are exposure-invariant within 0.1 %"
+
+# Budget mode without a sweep measures the built-in chains on the frames first; frames
+# without a reference cannot be measured, which it says before writing anything.
+"$hush" denoise --in "$frames_dir" --out budget3 --budget-ms 1000 > budget3.txt 2> budget3.err ||
+    fail "hush denoise --budget-ms without --sweep: $(cat budget3.err)"
+grep -q "without --sweep: measuring the built-in chains" budget3.txt || fail "no quick sweep: $(cat budget3.txt)"
+grep -q "budget 1e+03 ms: '.*' (.* (its defaults)): the best mean SSIM" budget3.txt ||
+    fail "budget mode without a sweep did not say why: $(cat budget3.txt)"
+"$hush" render --scene cornell --size 16x16 --frames 2 --reference-spp 0 --out unscored \
+    --channels color,direct,indirect,matte,glossy,albedo,specular,normal,position,depth,motion,roughness,meshid,virtualpos,emission > /dev/null
+expect_exit 2 "some frames must carry a 'reference' layer" denoise --in unscored --out budget4 --budget-ms 10
+nothing_written budget4
+echo "ok: budget mode without a sweep"

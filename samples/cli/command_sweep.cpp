@@ -223,7 +223,7 @@ std::vector<SourceFrames> frameSources(const SweepOptions& o, OutputFolder& out)
 // The earlier run's result for this source and configuration, if its configuration
 // was the same chain file; its images are kept.
 const SweepPoint* resumable(const SweepResult& earlier, const SweepConfig& config, const SourceFrames& s,
-                            OutputFolder& out) {
+                            const std::vector<uint32_t>& referenced, OutputFolder& out) {
     const SweepPoint* p = earlier.find(s.source.key, config.name);
     if (!p) return nullptr;
     const auto same = std::find_if(earlier.configs.begin(), earlier.configs.end(),
@@ -232,7 +232,7 @@ const SweepPoint* resumable(const SweepResult& earlier, const SweepConfig& confi
     const SweepReportFiles files;
     for (const std::string& folder : {config.name, std::string("noisy"), std::string("reference")}) {
         SweepSource shown = s.source;
-        for (const auto frame : scoredFrames(s.paths)) {
+        for (const auto frame : referenced) {
             shown.shownFrame = frame;
             if (!fs::exists(out.path() / files.image(shown, folder))) return nullptr;
             out.keep(files.image(shown, folder));
@@ -296,10 +296,12 @@ int runSweep(std::span<const std::string_view> args) {
     size_t done = 0, reused = 0;
     for (const auto& s : sources) {
         result.sources.push_back(s.source);
-        result.sources.back().shownFrame = scoredFrames(s.paths).back();
+        // Read from the frames' headers once per source, not once per configuration.
+        const auto referenced = scoredFrames(s.paths);
+        result.sources.back().shownFrame = referenced.back();
         for (const auto& config : result.configs) {
             const auto chainFile = configFile(config, s.source.exposure, out);
-            if (const SweepPoint* p = resumable(earlier, config, s, out)) {
+            if (const SweepPoint* p = resumable(earlier, config, s, referenced, out)) {
                 ++reused;
                 result.points.push_back(*p);
                 const auto es = std::find_if(earlier.sources.begin(), earlier.sources.end(),

@@ -36,6 +36,7 @@ const Command& denoiseCommand();
 const Command& demoCommand();
 const Command& datasetCommand();
 const Command& sweepCommand();
+const Command& checkCommand();
 
 // hush::Error (InvalidArgument) for an argument a subcommand does not know.
 [[noreturn]] void unknownArgument(std::string_view command, std::string_view arg);

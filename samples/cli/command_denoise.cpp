@@ -49,6 +49,7 @@ const std::string& usage() {
         "  --frames <n>      at most n frames\n"
         "  --no-exr, --no-png  skip writing those outputs\n"
         "  --side-by-side    <out>/side_by_side/frame_<i>.png: noisy | chains | reference\n"
+        "                    (the reference panel only where the frame has one)\n"
         "  --dump-graph      <out>/graph.<chain>.dot and .json: each compiled graph\n"
         "  --adapter <text>  use the first adapter whose name contains <text>\n"
         "  --budget-ms <ms> [--sweep <sweep.json>]\n"

@@ -272,10 +272,10 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
             scoreTemporalArtifacts(result, display, previous, reference, pair ? &previousReference : nullptr,
                                    hasGeometry ? ages.recentMask() : std::vector<uint8_t>{}, metrics);
         }
-        if (scored && o.sideBySide) {
+        if (o.sideBySide) {   // frames without a reference get the strip without its last panel
             std::vector<const RgbaImage*> panels;
             for (const auto& d : display) panels.push_back(&d);
-            panels.push_back(&reference);
+            if (scored) panels.push_back(&reference);
             const auto strip = cli::sideBySide(panels);
             writePngOutput(o, out, "side_by_side", frame.index, strip);
         }

@@ -22,8 +22,9 @@ namespace hush::cli {
 namespace {
 
 // Every subcommand, in the order `hush --help` lists them.
-std::array<const Command*, 6> commands() {
-    return {&demoCommand(), &denoiseCommand(), &sweepCommand(), &renderCommand(), &datasetCommand(), &infoCommand()};
+std::array<const Command*, 7> commands() {
+    return {&demoCommand(),    &denoiseCommand(), &sweepCommand(), &checkCommand(),
+            &renderCommand(), &datasetCommand(), &infoCommand()};
 }
 
 std::string commandNames() {

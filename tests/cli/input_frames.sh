@@ -38,4 +38,10 @@ echo "ok: a gap warns and resets the history"
 # available, which depends on the machine, so it is not scripted here.)
 expect_exit 2 "1 to 16384" render --scene cornell --size 60000x60000 --frames 1 --out huge
 nothing_written huge
+
+# --side-by-side on frames without a reference still writes the strip (noisy | chains).
+"$hush" render --scene cornell --size 16x16 --frames 2 --reference-spp 0 --out unscored > /dev/null
+"$hush" denoise --in unscored --out sbs --chain eaw --side-by-side --no-exr > /dev/null 2>&1 || fail "side-by-side run failed"
+[[ -f sbs/side_by_side/frame_0001.png ]] || fail "no side-by-side strip for a frame without a reference: $(ls sbs)"
+echo "ok: side-by-side strips for frames without a reference"
 echo "all input-frame checks passed"

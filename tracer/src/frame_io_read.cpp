@@ -109,6 +109,18 @@ PixelKind kindOf(Imf::PixelType type) {
 }
 
 // The file's channels grouped by hush layer: layer -> component -> file channel.
+// The error for a file from another renderer that has none of hush's layer names.
+std::string noHushLayers(const Imf::Header& header) {
+    std::string names;
+    size_t count = 0;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it, ++count)
+        if (count < 6) names += std::string(count ? ", " : "") + it.name();
+    if (count > 6) names += ", ... (" + std::to_string(count) + " in all)";
+    return "none of hush's layers (color, albedo, normal, depth, motion, ...) is present; the file's channels are " +
+           (names.empty() ? std::string("none") : names) +
+           ". docs/frame-format.md names the layers a renderer must write";
+}
+
 // Channels outside hush's layers (bare "R", "diffuse.R", "color.R" nested deeper)
 // are not hush's and are skipped.
 std::map<Channel, std::map<std::string, const Imf::Channel*>> hushLayers(const Imf::Header& header) {
@@ -190,6 +202,7 @@ Frame readExr(const std::string& path, const ReadOptions& options) {
         if (std::find(wanted.begin(), wanted.end(), channel) == wanted.end()) wanted.push_back(channel);
     if (wanted.empty())
         for (const auto& entry : layers) wanted.push_back(entry.first);
+    if (wanted.empty()) reader.fail(ErrorKind::NotFound, noHushLayers(header));
     Imf::FrameBuffer buffer;
     std::vector<std::vector<uint32_t>> meshIds;   // exact UINT ids, converted after reading
     for (Channel channel : wanted) {

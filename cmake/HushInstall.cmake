@@ -3,7 +3,11 @@
 #   find_package(hush CONFIG REQUIRED)
 #   target_link_libraries(app PRIVATE hush::graph hush::shaders)   # hush::graph brings hush::rhi
 #
-# Installed: the static libraries, their public headers, the `hush` CLI, and
+#   target_link_libraries(app PRIVATE hush::c)                      # or the C API (hush/hush.h)
+#
+# Installed: the static libraries, their public headers, the C API's libhush.so with
+# hush/hush.h and hush/hush_vulkan.h, <libdir>/pkgconfig/hush.pc (for
+# `pkg-config --cflags --libs hush`), the `hush` CLI, and
 # <libdir>/cmake/hush/{hushConfig,hushConfigVersion,hushTargets}.cmake.
 # tests/consumer proves it by building a small project against an installed tree.
 include(GNUInstallDirs)
@@ -13,7 +17,7 @@ set(HUSH_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/hush"
     CACHE STRING "Where the hush CMake package files are installed, relative to the prefix")
 
 # Consumers see hush::core, hush::rhi, hush::graph, hush::passes and hush::shaders (each target sets its EXPORT_NAME).
-install(TARGETS hush_core hush_rhi hush_graph hush_shaders hush_passes
+install(TARGETS hush_core hush_rhi hush_graph hush_shaders hush_passes hush_c
   EXPORT hushTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
   LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}")
@@ -21,11 +25,13 @@ install(TARGETS hush_core hush_rhi hush_graph hush_shaders hush_passes
 # $<INSTALL_INTERFACE:include>, set in rhi/ and shaders/.)
 
 # Public headers keep their <hush/<layer>/...> paths.
-foreach(layer_include IN ITEMS core/include rhi/include graph/include passes/include shaders/include)
+foreach(layer_include IN ITEMS core/include rhi/include graph/include passes/include shaders/include capi/include)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${layer_include}/hush"
           DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
           FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
 endforeach()
+
+install(FILES "${PROJECT_BINARY_DIR}/hush.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
 
 if(TARGET hush)
   install(TARGETS hush RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")

@@ -157,6 +157,8 @@ void RawVulkan::createDevice() {
     HUSH_LOAD_DEVICE(vkCreateFence);
     HUSH_LOAD_DEVICE(vkDestroyFence);
     HUSH_LOAD_DEVICE(vkWaitForFences);
+    HUSH_LOAD_DEVICE(vkCmdPipelineBarrier);
+    HUSH_LOAD_DEVICE(vkCmdCopyBufferToImage);
 #undef HUSH_LOAD_DEVICE
     vkGetDeviceQueue(device, family, 0, &queue);
     REQUIRE(queue != VK_NULL_HANDLE);

@@ -71,6 +71,8 @@ struct RawVulkan {
     HUSH_RAW_FN(vkCreateFence);
     HUSH_RAW_FN(vkDestroyFence);
     HUSH_RAW_FN(vkWaitForFences);
+    HUSH_RAW_FN(vkCmdPipelineBarrier);
+    HUSH_RAW_FN(vkCmdCopyBufferToImage);
 
     RawVulkan() = default;
     RawVulkan(const RawVulkan&) = delete;

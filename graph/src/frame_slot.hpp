@@ -14,6 +14,9 @@ struct RenderGraph::FrameSlot {
     uint64_t frame = 0;
     double cpuRecordMs = 0.0;
     bool timingsPending = false;
+    // Recorded into a caller's command buffer (RenderGraph::record): the caller submits
+    // it and reports its completion (frameCompleted); hush cannot wait for it.
+    bool external = false;
 };
 
 } // namespace hush::graph

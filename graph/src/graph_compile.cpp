@@ -57,6 +57,7 @@ void initialiseHistoryStates(const rhi::Device& device, const std::string& label
 } // namespace
 
 void RenderGraph::compile() {
+    requireNoRecordedFrames("compile()");
     waitIdle();   // the old resources may still be in use by frames in flight
     validate(model_);
     auto c = std::make_unique<CompiledGraph>();

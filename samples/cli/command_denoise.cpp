@@ -29,7 +29,7 @@ const std::string& usage() {
     static const std::string text =
         "usage: hush denoise --in <folder> --out <folder> [--chain <list>] [--first <i>] [--frames <n>]\n"
         "                    [--no-exr] [--no-png] [--side-by-side] [--dump-graph] [--overwrite]\n"
-        "                    [--adapter <text>] [--budget-ms <ms> [--sweep <sweep.json>]]\n"
+        "                    [--reference <folder>] [--adapter <text>] [--budget-ms <ms> [--sweep <sweep.json>]]\n"
         "\n"
         "Runs denoising chains over the frames of <folder> (docs/frame-format.md), in index\n"
         "order. Writes <out>/<chain>/frame_<i>.exr (filtered radiance, layer 'color') and .png\n"
@@ -41,7 +41,11 @@ const std::string& usage() {
         "options:\n"
         "  --chain <list>    comma-separated built-in chains (" + builtinList() + ") or chain files\n"
         "                    (docs/passes/chain-files.md); default: svgf\n"
-        "  --in <folder>     the frames\n"
+        "  --in <folder>     the frames: hush's frame format, or Blender Cycles multilayer EXRs\n"
+        "                    (read directly: docs/blender.md)\n"
+        "  --reference <folder>  each frame's reference from the file of the same name there (its\n"
+        "                    'color', or a Cycles file's Combined): e.g. the same frames rendered\n"
+        "                    at many samples, so that quality is scored\n"
         "  --out <folder>    where outputs go: a new or empty folder, or an earlier hush run's\n"
         "                    (its stale outputs are removed; docs/reliability.md)\n"
         "  --overwrite       write into a folder that holds other files too\n"
@@ -98,6 +102,7 @@ int runDenoise(std::span<const std::string_view> args) {
     for (size_t i = 0; i < args.size(); ++i) {
         std::string v;
         if (takeOption(args, i, "--in", v)) in = v;
+        else if (takeOption(args, i, "--reference", v)) options.referenceFolder = v;
         else if (takeOption(args, i, "--budget-ms", v)) budgetMs = core::parseNumber(v, "--budget-ms", 1e-6, 1e9);
         else if (takeOption(args, i, "--sweep", v)) sweep = v;
         else if (takeOption(args, i, "--out", v)) options.outFolder = v;

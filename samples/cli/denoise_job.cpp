@@ -152,6 +152,34 @@ void checkOutputNames(const std::vector<ChainResult>& chains, const std::vector<
     }
 }
 
+std::string referencePath(const DenoiseJobOptions& o, const std::string& framePath) {
+    return (std::filesystem::path(o.referenceFolder) / std::filesystem::path(framePath).filename()).string();
+}
+
+void checkReference(const DenoiseJobOptions& o, const std::string& framePath, const tracer::FrameFileInfo& frame,
+                    std::vector<std::string>& problems) {
+    const std::string path = referencePath(o, framePath);
+    try {
+        const auto info = tracer::readFrameInfo(path);
+        if (info.width != frame.width || info.height != frame.height)
+            problems.push_back(path + ": the reference is " + std::to_string(info.width) + "x" +
+                               std::to_string(info.height) + ", its frame " + std::to_string(frame.width) + "x" +
+                               std::to_string(frame.height));
+        else if (std::find(info.layers.begin(), info.layers.end(), tracer::Channel::Color) == info.layers.end())
+            problems.push_back(path + ": no 'color' layer (or Cycles Combined pass) to take the reference from");
+    } catch (const Error& e) {
+        problems.push_back(std::string("--reference: ") + e.what());
+    }
+}
+
+// The reference from --reference's folder: its 'color' becomes the frame's reference.
+void addReference(const DenoiseJobOptions& o, const std::string& framePath, tracer::Frame& frame) {
+    tracer::Frame reference = tracer::readFrame(referencePath(o, framePath),
+                                                {.channels = {tracer::Channel::Color}, .expectedWidth = frame.width,
+                                                 .expectedHeight = frame.height});
+    frame.channels[tracer::Channel::Reference] = std::move(reference.channels.at(tracer::Channel::Color));
+}
+
 } // namespace
 
 void checkSequence(const DenoiseJobOptions& o) {
@@ -181,6 +209,7 @@ void checkSequence(const DenoiseJobOptions& o) {
             if (std::find(info.layers.begin(), info.layers.end(), layer) == info.layers.end())
                 problems.push_back(where + "no '" + std::string(tracer::channelInfo(layer).name) +
                                    "' layer, which a chain reads (hush render --channels all writes every layer)");
+        if (!o.referenceFolder.empty()) checkReference(o, o.framePaths[f], info, problems);
         const uint32_t index = frameIndexOf(o.framePaths[f]);
         if (f > 0 && index <= previousIndex)
             problems.push_back(where + "index " + std::to_string(index) + " does not follow " +
@@ -226,6 +255,7 @@ DenoiseJobResult runDenoiseJob(const rhi::Device& device, const DenoiseJobOption
         auto frame = tracer::readFrame(o.framePaths[f], {.requireChannels = false,
                                                          .expectedWidth = size.width,
                                                          .expectedHeight = size.height});
+        if (!o.referenceFolder.empty()) addReference(o, o.framePaths[f], frame);
         if (o.exposure != 1.0f) scaleRadiance(frame, o.exposure);
         if (frame.index >= o.stepFrame) scaleRadiance(frame, o.stepExposure);
         // A gap in the indices is a cut: no history may carry across it.

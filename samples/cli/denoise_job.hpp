@@ -19,6 +19,9 @@ namespace hush::cli {
 struct DenoiseJobOptions {
     std::vector<std::string> chains;     // built-in names or chain files
     std::vector<std::string> framePaths; // in order
+    // Non-empty: each frame's reference is the 'color' layer of the file of the same
+    // name in this folder (a high-sample render of the same frames).
+    std::string referenceFolder;
     std::string outFolder;
     bool overwrite = false;              // write into a folder with files of unknown origin
     bool writeExr = true;

@@ -5,9 +5,13 @@
 #include <istream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <Imath/ImathBox.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+
+#include <hush/tracer/frame_io.hpp>
 
 #include <hush/core/error.hpp>
 
@@ -50,5 +54,13 @@ std::string compressionName(Imf::Compression compression);
 // A frame file's number from its name, "frame_0012.exr" -> 12; -1 if the name does
 // not have that form (or the number does not fit 32 bits).
 long long frameIndexFromFileName(std::string_view fileName);
+
+// Blender Cycles multilayer files (frame_io_cycles.cpp, docs/blender.md): the view
+// layer whose "<layer>.Combined.R" the header has ("" when none), and the frame made
+// from its passes, added to `frame` (size and attributes already read).
+std::string cyclesViewLayer(const Imf::Header& header);
+std::vector<Channel> cyclesLayers(const Imf::Header& header, const std::string& viewLayer);   // from names alone
+Frame readCyclesFrame(Imf::InputFile& file, const std::string& viewLayer, Frame frame, const ReadOptions& options,
+                      const std::string& path);
 
 } // namespace hush::tracer::detail

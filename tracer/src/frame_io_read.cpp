@@ -202,6 +202,9 @@ Frame readExr(const std::string& path, const ReadOptions& options) {
         if (std::find(wanted.begin(), wanted.end(), channel) == wanted.end()) wanted.push_back(channel);
     if (wanted.empty())
         for (const auto& entry : layers) wanted.push_back(entry.first);
+    if (layers.empty())   // another renderer's file: Blender Cycles' passes, or nothing hush knows
+        if (const std::string viewLayer = detail::cyclesViewLayer(header); !viewLayer.empty())
+            return detail::readCyclesFrame(file, viewLayer, std::move(frame), options, path);
     if (wanted.empty()) reader.fail(ErrorKind::NotFound, noHushLayers(header));
     Imf::FrameBuffer buffer;
     std::vector<std::vector<uint32_t>> meshIds;   // exact UINT ids, converted after reading
@@ -278,6 +281,8 @@ FrameFileInfo readFrameInfo(const std::string& path) {
         for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
             info.exrChannels.push_back({it.name(), kindOf(it.channel().type)});
         for (const auto& entry : hushLayers(header)) info.layers.push_back(entry.first);
+        if (const std::string viewLayer = detail::cyclesViewLayer(header); info.layers.empty() && !viewLayer.empty())
+            info.layers = detail::cyclesLayers(header, viewLayer);   // what readFrame makes of its passes
         return info;
     } catch (const std::exception& e) {
         throw Error(ErrorKind::InvalidArgument, "cannot read frame '" + path + "': " + e.what());

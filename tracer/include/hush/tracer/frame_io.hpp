@@ -46,7 +46,9 @@ struct ReadOptions {
 // turned into infinities); NaN and +-Inf are kept.
 void writeFrame(const Frame& frame, const std::string& path, const WriteOptions& options = {});
 
-// Reads a frame written by hush or by any renderer that follows docs/frame-format.md.
+// Reads a frame written by hush or by any renderer that follows docs/frame-format.md,
+// or a Blender Cycles multilayer file (its passes mapped onto hush's layers,
+// docs/blender.md).
 // Throws hush::Error naming the file: missing, not OpenEXR, truncated, a hush layer
 // with missing or extra components, a data window that is not the display window or
 // not the expected size, a known "hush.*" attribute of the wrong type.
@@ -62,7 +64,8 @@ struct FrameFileInfo {
         PixelKind type;
     };
     std::vector<ExrChannel> exrChannels;   // every channel in the file, sorted by name
-    std::vector<Channel> layers;           // the hush layers among them (complete or not)
+    std::vector<Channel> layers;           // the hush layers among them (complete or not); for a Blender
+                                           // Cycles file, those readFrame makes from its passes
 };
 FrameFileInfo readFrameInfo(const std::string& path);
 

@@ -70,6 +70,26 @@ FrameSource::FrameSource(const std::string& folder, uint32_t first, uint32_t cou
     }
 }
 
+SourceFrame resampled(const SourceFrame& frame, uint32_t fromWidth, uint32_t fromHeight, uint32_t width,
+                      uint32_t height, const std::vector<LayerLayout>& layers) {
+    SourceFrame out{frame.index, frame.camera, {}};
+    const float sx = float(width) / float(fromWidth), sy = float(height) / float(fromHeight);
+    for (const LayerLayout& layer : layers) {
+        const std::vector<float>& from = frame.texels.at(layer.name);
+        std::vector<float>& to = out.texels[layer.name];
+        to.resize(size_t(width) * height * layer.texelFloats);
+        for (uint32_t y = 0; y < height; ++y)
+            for (uint32_t x = 0; x < width; ++x) {
+                const size_t src = (size_t(std::min(fromHeight - 1, uint32_t(float(y) / sy))) * fromWidth +
+                                    std::min(fromWidth - 1, uint32_t(float(x) / sx))) * layer.texelFloats;
+                float* texel = &to[(size_t(y) * width + x) * layer.texelFloats];
+                std::copy_n(&from[src], layer.texelFloats, texel);
+                if (layer.name == "motion") texel[0] *= sx, texel[1] *= sy;   // pixels of the new size
+            }
+    }
+    return out;
+}
+
 void writeDisplayFrame(const std::string& folder, uint32_t index, uint32_t width, uint32_t height, const float* rgba) {
     try {
         hush::tracer::Frame frame;

@@ -48,6 +48,11 @@ private:
     std::vector<std::string> present_;
 };
 
+// The frame at another size, as an engine rendering at that resolution would give it:
+// each pixel the nearest source pixel's texels, motion scaled to the new pixels.
+SourceFrame resampled(const SourceFrame& frame, uint32_t fromWidth, uint32_t fromHeight, uint32_t width,
+                      uint32_t height, const std::vector<LayerLayout>& layers);
+
 // Writes `rgba` (width * height * 4 floats) as frame `index` of `folder`
 // (frame_<index>.exr, its rgb in the color layer, 32-bit float), atomically.
 void writeDisplayFrame(const std::string& folder, uint32_t index, uint32_t width, uint32_t height, const float* rgba);

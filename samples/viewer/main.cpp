@@ -132,8 +132,9 @@ int runHeadless(const Options& o, EngineVulkan& vulkan, const FrameSource& sourc
 }
 
 #ifdef HUSH_VIEWER_WINDOW
-std::string titleOf(const ViewerDenoiser& denoiser, bool sideBySide) {
-    std::string title = "hush viewer: " + denoiser.chainName() + (sideBySide ? " (left half: noisy input)" : "");
+std::string titleOf(const ViewerDenoiser& denoiser, bool sideBySide, uint32_t width, uint32_t height) {
+    std::string title = "hush viewer: " + denoiser.chainName() + " at " + std::to_string(width) + "x" +
+                        std::to_string(height) + (sideBySide ? " (left half: noisy input)" : "");
     char ms[64];
     std::snprintf(ms, sizeof ms, " | %.2f GPU ms:", denoiser.frameMs());
     title += ms;
@@ -151,14 +152,34 @@ std::string withIterations(const std::string& chain, int iterations) {
            std::to_string(iterations) + "}}}";
 }
 
-int runWindow(const Options& o, ViewerWindow& window, EngineVulkan& vulkan, const FrameSource& source) {
+// What the engine renders at its current resolution: its images and the frames at
+// that size. A window resize makes a new one (the render resolution follows the
+// window), and hush recompiles its graph over the new images (the history restarts).
+struct Resolution {
+    std::unique_ptr<ViewerEngine> engine;
+    std::vector<SourceFrame> frames;
+};
+
+Resolution renderAt(EngineVulkan& vulkan, const FrameSource& source, VkExtent2D size, uint32_t slots) {
     const auto layers = ViewerDenoiser::inputLayouts();
+    Resolution r;
+    r.engine = std::make_unique<ViewerEngine>(vulkan, size.width, size.height, layers, formatsOf(layers),
+                                              ViewerDenoiser::kDisplayFormat, slots);
+    for (const SourceFrame& frame : source.frames())
+        r.frames.push_back(size.width == source.width() && size.height == source.height()
+                               ? frame
+                               : resampled(frame, source.width(), source.height(), size.width, size.height, layers));
+    return r;
+}
+
+int runWindow(const Options& o, ViewerWindow& window, EngineVulkan& vulkan, const FrameSource& source) {
     constexpr uint32_t kSlots = 2;
-    ViewerEngine engine(vulkan, source.width(), source.height(), layers, formatsOf(layers), ViewerDenoiser::kDisplayFormat, kSlots);
+    Resolution at = renderAt(vulkan, source, {source.width(), source.height()}, kSlots);
     ViewerDenoiser denoiser({vulkan.instance(), vulkan.physicalDevice(), vulkan.device(), vulkan.queue(),
                              vulkan.queueFamily(), vulkan.extendedStorageFormats()});
-    connect(denoiser, engine, source);
-    denoiser.setChain(o.chain);
+    connect(denoiser, *at.engine, source);
+    std::string chain = o.chain;   // what setChain was last given
+    denoiser.setChain(chain);
     std::vector<VkSemaphore> available(kSlots);
     for (VkSemaphore& s : available) {
         VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
@@ -168,20 +189,38 @@ int runWindow(const Options& o, ViewerWindow& window, EngineVulkan& vulkan, cons
     int iterations = 5;
     uint64_t frame = 0;
     const auto settle = [&] {   // every hush frame in flight reported, before the graph changes
-        engine.waitIdle();
+        at.engine->waitIdle();
         for (uint32_t k = 0; k < kSlots; ++k)
-            if (engine.slot(frame + k).hushPending) denoiser.frameCompleted(), engine.slot(frame + k).hushPending = false;
+            if (at.engine->slot(frame + k).hushPending)
+                denoiser.frameCompleted(), at.engine->slot(frame + k).hushPending = false;
+    };
+    const auto switchTo = [&](const std::string& next) {
+        settle();
+        denoiser.setChain(next);
+        chain = next;
     };
     while (!window.shouldClose() && (o.frames == 0 || frame < o.frames)) {
         const WindowRequests requests = window.poll();
-        if (requests.chain >= 0 && requests.chain < 5) settle(), denoiser.setChain(kChainKeys[requests.chain]);
+        if (requests.chain >= 0 && requests.chain < 5) switchTo(kChainKeys[requests.chain]);
         if (requests.knob && (denoiser.chainName() == "svgf" || denoiser.chainName() == "eaw")) {
             iterations = std::clamp(iterations + requests.knob, 0, 16);
-            settle();
-            denoiser.setChain(withIterations(denoiser.chainName(), iterations));
+            switchTo(withIterations(denoiser.chainName(), iterations));
         }
         if (requests.toggleSideBySide) sideBySide = !sideBySide;
-        if (requests.resized) settle(), window.rebuild();
+        if (requests.resized) {
+            settle();
+            window.rebuild();
+            const VkExtent2D w = window.framebufferSize();
+            const VkExtent2D size{std::max(8u, w.width / o.scale), std::max(8u, w.height / o.scale)};
+            if (size.width != at.engine->width() || size.height != at.engine->height()) {
+                denoiser.releaseImages();   // hush lets go of the old images before the engine frees them
+                at = {};
+                at = renderAt(vulkan, source, size, kSlots);
+                connect(denoiser, *at.engine, source);
+                denoiser.setChain(chain);   // recompiled for the new size; the history starts over
+            }
+        }
+        ViewerEngine& engine = *at.engine;
         FrameSlot& slot = engine.slot(frame);
         const VkSemaphore acquired = available[frame % kSlots];
         engine.begin(slot);   // waits for this slot's last submission
@@ -191,16 +230,16 @@ int runWindow(const Options& o, ViewerWindow& window, EngineVulkan& vulkan, cons
             vkEndCommandBuffer(slot.commands);
             continue;
         }
-        const SourceFrame& source_frame = source.frames()[frame % source.frames().size()];
-        engine.recordUpload(slot, source_frame);
-        denoiser.setCamera(source_frame.camera);
+        const SourceFrame& current = at.frames[frame % at.frames.size()];
+        engine.recordUpload(slot, current);
+        denoiser.setCamera(current.camera);
         denoiser.record(slot.commands);
         slot.hushPending = true;
         window.recordPresent(slot.commands, image, engine.denoised().image, engine.noisy().image, engine.width(),
                              engine.height(), sideBySide);
         engine.submit(slot, acquired, VK_PIPELINE_STAGE_2_TRANSFER_BIT, window.renderFinished(image));
         window.present(image);
-        if (frame % 8 == 0) window.setTitle(titleOf(denoiser, sideBySide));
+        if (frame % 8 == 0) window.setTitle(titleOf(denoiser, sideBySide, engine.width(), engine.height()));
         ++frame;
     }
     settle();

@@ -101,6 +101,13 @@ void ViewerDenoiser::setImages(const std::map<std::string, EngineImageRef>& inpu
     });
 }
 
+void ViewerDenoiser::releaseImages() {
+    impl_->graph.reset();
+    impl_->inputs.clear();
+    impl_->denoised = {};
+    impl_->noisy = {};
+}
+
 void ViewerDenoiser::Impl::build(passes::Chain& chain) {
     graph = std::make_unique<graph::RenderGraph>(device, graph::RenderGraphDesc{.label = "viewer." + chain.name()});
     graph->setOutputSize(size);

@@ -50,6 +50,9 @@ public:
     // and the two RGBA32F display images hush writes.
     void setImages(const std::map<std::string, EngineImageRef>& inputs, const std::vector<std::string>& available,
                    EngineImageRef denoised, EngineImageRef noisy);
+    // Lets go of the engine's images (and the graph over them) before the engine
+    // destroys them, e.g. to render at a new size; every frame must be reported.
+    void releaseImages();
     // A built-in chain's name, or a chain file's text ('{'...); rebuilds the graph (the
     // history starts over). Throws std::runtime_error with hush's message.
     void setChain(const std::string& chain);

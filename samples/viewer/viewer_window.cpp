@@ -124,6 +124,12 @@ WindowRequests ViewerWindow::poll() {
     return requests;
 }
 
+VkExtent2D ViewerWindow::framebufferSize() const {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_, &w, &h);
+    return {uint32_t(std::max(w, 0)), uint32_t(std::max(h, 0))};
+}
+
 void ViewerWindow::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 bool ViewerWindow::acquire(VkSemaphore available, uint32_t& image) {

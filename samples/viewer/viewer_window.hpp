@@ -39,6 +39,7 @@ public:
                        uint32_t height, bool sideBySide);
     void present(uint32_t image);
     void rebuild();   // the swapchain, at the window's new size
+    VkExtent2D framebufferSize() const;
     VkSemaphore renderFinished(uint32_t image) const { return finished_[image]; }
 
 private:

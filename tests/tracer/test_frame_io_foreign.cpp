@@ -53,15 +53,14 @@ TEST_CASE("frame reading: another renderer's file with only color.R/G/B loads", 
 }
 
 TEST_CASE("frame reading: a file with none of hush's layers says so and lists its channels", "[frame_io]") {
-    // Blender's multilayer EXRs name their passes "ViewLayer.<Pass>.<component>".
+    // Another renderer's beauty and depth passes (not Cycles': no "<layer>.Combined.R").
     TempDir dir;
     const std::string path = dir.file("frame_0001.exr");
     RawExr exr(4, 3);
-    for (const char* name : {"ViewLayer.Combined.R", "ViewLayer.Combined.G", "ViewLayer.Combined.B", "ViewLayer.Depth.Z"})
-        exr.addFloat(name, [](int, int) { return 1.0f; });
+    for (const char* name : {"beauty.R", "beauty.G", "beauty.B", "Z"}) exr.addFloat(name, [](int, int) { return 1.0f; });
     test::writeRawExr(path, exr);
     CHECK_THROWS_WITH(readFrame(path), Catch::Contains(path) && Catch::Contains("none of hush's layers") &&
-                                           Catch::Contains("ViewLayer.Combined.R") && Catch::Contains("frame-format.md"));
+                                           Catch::Contains("beauty.R") && Catch::Contains("frame-format.md"));
 }
 
 TEST_CASE("frame reading: foreign camera attributes, ids and pixel types follow the contract", "[frame_io]") {

@@ -159,11 +159,6 @@ HUSH_API HushStatus hushExecute(HushDenoiser denoiser) {
                                                      "' was never set (hushSetInput or hushSetInputVulkanImage)");
         d.runner->run();
         d.executed = true;
-        const auto& timings = d.runner->graph().timings();
-        d.passNames.clear();
-        d.passMs.clear();
-        for (const auto& pass : timings.passes) d.passNames.push_back(pass.name), d.passMs.push_back(pass.gpuMs);
-        d.frameMs = timings.valid ? timings.totalGpuMs : -1.0;
     });
 }
 
@@ -187,18 +182,27 @@ HUSH_API HushStatus hushReadOutput(HushDenoiser denoiser, HushOutput output, flo
     });
 }
 
-HUSH_API uint32_t hushPassCount(HushDenoiser denoiser) { return denoiser ? uint32_t(denoiser->passNames.size()) : 0; }
+// Read straight from the graph's timings: run() waits, so they are the last frame's.
+HUSH_API uint32_t hushPassCount(HushDenoiser denoiser) {
+    return denoiser && denoiser->executed ? uint32_t(denoiser->runner->graph().timings().passes.size()) : 0;
+}
 
 HUSH_API HushStatus hushPassTiming(HushDenoiser denoiser, uint32_t index, const char** name, double* gpuMs) {
     return guarded("hushPassTiming", [&] {
         HushDenoiser_T& d = checkedDenoiser(denoiser);
-        if (index >= d.passNames.size())
-            badArgument("index", std::to_string(index) + " is past the " + std::to_string(d.passNames.size()) + " timed passes");
-        if (name) *name = d.passNames[index].c_str();
-        if (gpuMs) *gpuMs = d.passMs[index];
+        const uint32_t count = hushPassCount(denoiser);
+        if (index >= count)
+            badArgument("index", std::to_string(index) + " is past the " + std::to_string(count) + " timed passes");
+        const auto& pass = d.runner->graph().timings().passes[index];
+        if (name) *name = pass.name.c_str();
+        if (gpuMs) *gpuMs = pass.gpuMs;
     });
 }
 
-HUSH_API double hushFrameGpuMs(HushDenoiser denoiser) { return denoiser ? denoiser->frameMs : -1.0; }
+HUSH_API double hushFrameGpuMs(HushDenoiser denoiser) {
+    if (!denoiser || !denoiser->executed) return -1.0;
+    const auto& timings = denoiser->runner->graph().timings();
+    return timings.valid ? timings.totalGpuMs : -1.0;
+}
 
 } // extern "C"

@@ -24,9 +24,6 @@ struct HushDenoiser_T {
     std::array<bool, hush::passes::kInputChannelCount> set{};
     bool executed = false;
     std::vector<float> staging;   // a strided host image, packed
-    std::vector<std::string> passNames;
-    std::vector<double> passMs;
-    double frameMs = -1.0;
 };
 
 namespace hush::capi {

@@ -1,11 +1,14 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 // One level of the edge-avoiding a-trous wavelet filter of Dammertz et al. 2010
 // (HPG 2010): B3-spline 5x5 kernel at step 2^level, weights
 // exp(-||I(p) - I(q)||^2 / sigma^2) on colour, normal and world position, multiplied.
-// Formulas and guards: passes/include/hush/passes/eaw/atrous.hpp.
+// Formulas and guards: passes/include/hush/passes/eaw/atrous.hpp. One invocation
+// filters a 2x2 block of the a-trous lattice (common/atrous_lattice.glsl).
 #include "common/grid.glsl"
+#include "common/atrous_lattice.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -26,6 +29,12 @@ layout(push_constant) uniform Params {
 
 const float kKernel[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
 
+// The invocation's 6x6 lattice points; a normal of 0 marks a point outside the image,
+// skipped like one without a surface.
+vec4 tapColour[kLatticePoints];
+vec3 tapNormal[kLatticePoints];
+vec3 tapPosition[kLatticePoints];
+
 bool hasSurface(vec3 n) {
     return dot(n, n) > 1e-6;
 }
@@ -39,19 +48,29 @@ float squaredDistance(vec3 a, vec3 b) {
     return dot(d, d);
 }
 
-void main() {
-    ivec2 p = hushPixel();
-    ivec2 size = imageSize(filtered);
-    if (!hushInside(p, size)) {
-        return;
+float kernelWeight(int t) {
+    return kKernel[abs(t % 5 - 2)] * kKernel[abs(t / 5 - 2)];
+}
+
+void loadLattice(ivec2 origin, ivec2 size) {
+    [[unroll]] for (int i = 0; i < kLatticePoints; ++i) {
+        ivec2 q = latticePixel(origin, params.step, i);
+        bool inside = hushInside(q, size);
+        tapColour[i] = inside ? texelFetch(color, q, 0) : vec4(0.0);
+        tapNormal[i] = inside ? texelFetch(normal, q, 0).xyz : vec3(0.0);
+        tapPosition[i] = inside ? texelFetch(position, q, 0).xyz : vec3(0.0);
     }
-    vec4 centre = texelFetch(color, p, 0);
-    vec3 nP = texelFetch(normal, p, 0).xyz;
+}
+
+// Pixel b of the block, its centre at lattice point c, inside the image.
+vec4 filterPixel(ivec2 p, int b) {
+    int c = latticeCentre(b);
+    vec4 centre = tapColour[c];
+    vec3 nP = tapNormal[c];
     if (!hasSurface(nP)) {
-        imageStore(filtered, p, centre);
-        return;
+        return centre;
     }
-    vec3 xP = texelFetch(position, p, 0).xyz;
+    vec3 xP = tapPosition[c];
     // Scale-free position weight: ||x_p - x_q|| / z_p, so that one sigma suits a scene
     // modelled in millimetres and one in metres (docs/passes/eaw.md).
     float xScale2 = 1.0;
@@ -59,27 +78,16 @@ void main() {
         float z = max(abs(texelFetch(depth, p, 0).x), 1e-20);
         xScale2 = z * z;
     }
-    // The 5x5 taps' colours and normals, read once: the scale-free colour weight needs
-    // their mean luminance before any weight (docs/passes/eaw.md).
-    vec3 tapColour[25];
-    vec3 tapNormal[25];
-    bool tapUsed[25];
+    // The scale-free colour weight needs the taps' mean luminance before any weight
+    // (docs/passes/eaw.md).
     float luminanceSum = 0.0, kernelSum = 0.0;
-    for (int t = 0; t < 25; ++t) {
-        ivec2 q = p + ivec2(t % 5 - 2, t / 5 - 2) * params.step;
-        tapUsed[t] = false;
-        if (!hushInside(q, size)) {
+    [[unroll]] for (int t = 0; t < 25; ++t) {
+        int q = latticeTap(b, t);
+        if (t != 12 && !hasSurface(tapNormal[q])) {
             continue;
         }
-        tapColour[t] = texelFetch(color, q, 0).rgb;
-        tapNormal[t] = texelFetch(normal, q, 0).xyz;
-        if (t != 12 && !hasSurface(tapNormal[t])) {
-            continue;
-        }
-        tapUsed[t] = true;
-        float h = kKernel[abs(t % 5 - 2)] * kKernel[abs(t / 5 - 2)];
-        luminanceSum += h * luminance(tapColour[t]);
-        kernelSum += h;
+        luminanceSum += kernelWeight(t) * luminance(tapColour[q].rgb);
+        kernelSum += kernelWeight(t);
     }
     // Scale-free: distances over the local mean luminance (floored at 1e-20), as the
     // position weight is over depth; a frame 1000x brighter is filtered alike.
@@ -91,23 +99,37 @@ void main() {
 
     vec3 colourSum = vec3(0.0);
     float weightSum = 0.0;
-    for (int t = 0; t < 25; ++t) {
-        if (!tapUsed[t]) {
+    [[unroll]] for (int t = 0; t < 25; ++t) {
+        int q = latticeTap(b, t);
+        if (t != 12 && !hasSurface(tapNormal[q])) {
             continue;
         }
-        vec3 c = tapColour[t];
+        vec3 cQ = tapColour[q].rgb;
         float w = 1.0;
         if (t != 12) {
-            ivec2 q = p + ivec2(t % 5 - 2, t / 5 - 2) * params.step;
-            vec3 xQ = texelFetch(position, q, 0).xyz;
             // w_rt w_n w_x as one exponential of the summed exponents.
-            w = exp(-(squaredDistance(centre.rgb, c) / sigmaRt2 + squaredDistance(nP, tapNormal[t]) / params.sigmaN2 +
-                      squaredDistance(xP, xQ) / (params.sigmaX2 * xScale2)));
+            w = exp(-(squaredDistance(centre.rgb, cQ) / sigmaRt2 + squaredDistance(nP, tapNormal[q]) / params.sigmaN2 +
+                      squaredDistance(xP, tapPosition[q]) / (params.sigmaX2 * xScale2)));
         }
-        float hw = kKernel[abs(t % 5 - 2)] * kKernel[abs(t / 5 - 2)] * w;
-        colourSum += hw * c;
+        float hw = kernelWeight(t) * w;
+        colourSum += hw * cQ;
         weightSum += hw;
     }
     // weightSum >= (3/8)^2 from the centre tap.
-    imageStore(filtered, p, vec4(colourSum / weightSum, centre.a));
+    return vec4(colourSum / weightSum, centre.a);
+}
+
+void main() {
+    ivec2 size = imageSize(filtered);
+    ivec2 origin = latticeOrigin(params.step);
+    if (!hushInside(latticePixel(origin, params.step, latticeCentre(0)), size)) {
+        return;   // the block's first pixel is its smallest: the whole block is outside
+    }
+    loadLattice(origin, size);
+    [[unroll]] for (int b = 0; b < kLatticeBlock * kLatticeBlock; ++b) {
+        ivec2 p = latticePixel(origin, params.step, latticeCentre(b));
+        if (hushInside(p, size)) {
+            imageStore(filtered, p, filterPixel(p, b));
+        }
+    }
 }

@@ -9,8 +9,6 @@ namespace hush::passes {
 
 namespace {
 
-constexpr uint32_t kThreadsPerBlock = 128;   // fit.comp's local_size_x
-
 // Sec. 6.1: "a static sequence of 16 random offsets, uniformly distributed over the
 // whole set of possible offsets". Drawn once (uniform on 0..63 in each axis, first
 // entry fixed at the undisplaced grid), in 1/64 of a block so every block size uses them.
@@ -77,17 +75,8 @@ BmfrBlockGrid bmfrBlockGrid(rhi::Extent2D image, uint32_t blockSize, bool offset
     return g;
 }
 
-uint64_t bmfrBlockBufferBytes(rhi::Extent2D image, const BmfrFitSettings& s) {
-    // Worst case over the offsets: an offset of blockSize - 1 in both axes.
-    const uint64_t block = bmfrBlockSizeFor(image, s.blockSize);
-    const uint64_t bx = (uint64_t(image.width) + 2 * block - 2) / block;
-    const uint64_t by = (uint64_t(image.height) + 2 * block - 2) / block;
-    const uint64_t columns = s.features.size() + 3;
-    return bx * by * block * block * columns * sizeof(float);
-}
-
 namespace {
-// The constant part of fit.comp's push constants: settings, guards, feature codes.
+// The constant part of the fit shaders' push constants: settings, guards, feature codes.
 rhi::PushConstants fitParams(const rhi::ComputePipeline& pipeline, const BmfrFitSettings& settings) {
     rhi::PushConstants params(pipeline);
     setFromSettings(params, settings);
@@ -103,19 +92,71 @@ rhi::PushConstants fitParams(const rhi::ComputePipeline& pipeline, const BmfrFit
 }
 } // namespace
 
+namespace {
+// The fit shader of one block size and output format: the block size fixes the
+// workgroup (B^2 / 8 invocations, 8 matrix rows each, in registers: fit.glsl).
+std::string fitShader(uint32_t blockSize, rhi::Format format) {
+    return "bmfr/fit" + std::to_string(blockSize) + (format == rhi::Format::RGBA16Float ? "_rgba16f" : "");
+}
+
+uint32_t fitThreads(uint32_t blockSize) { return blockSize * blockSize / 8; }
+
+// One block size's pipeline with its own push constants (they belong to a pipeline)
+// and the slots the pass writes every frame.
+struct FitVariant {
+    uint32_t blockSize;
+    rhi::ComputePipeline pipeline;
+    rhi::PushConstants params;
+    rhi::PushConstants::Slot offsetX, offsetY, blocksX, frame;
+
+    FitVariant(uint32_t block, rhi::ComputePipeline p, const BmfrFitSettings& settings)
+        : blockSize(block), pipeline(std::move(p)), params(fitParams(pipeline, settings)),
+          offsetX(params.slot("offsetX", rhi::ScalarType::Uint32)),
+          offsetY(params.slot("offsetY", rhi::ScalarType::Uint32)),
+          blocksX(params.slot("blocksX", rhi::ScalarType::Uint32)),
+          frame(params.slot("frame", rhi::ScalarType::Uint32)) {}
+
+    void setGrid(const BmfrBlockGrid& grid, uint64_t frameIndex) {
+        params.set(offsetX, grid.offsetX);
+        params.set(offsetY, grid.offsetY);
+        params.set(blocksX, grid.blocksX);
+        params.set(frame, uint32_t(frameIndex));
+    }
+};
+
+// The block sizes a fit can meet: the given one, or all three when it follows the frame.
+std::vector<uint32_t> fitBlockSizes(uint32_t blockSize) {
+    return blockSize != 0 ? std::vector<uint32_t>{blockSize} : std::vector<uint32_t>{16, 32, 64};
+}
+
+// fit.glsl reduces through subgroups and sizes its shared memory for subgroups of at
+// least 4 invocations; a 64-pixel block needs 512 invocations per workgroup.
+void checkDevice(const rhi::Device& device, uint32_t blockSize, const std::string& name) {
+    const auto& limits = device.adapterInfo().limits;
+    if (limits.subgroupSize < 4)
+        throw Error(ErrorKind::Unsupported, name + ": the BMFR fit needs subgroups of at least 4 invocations; " +
+                                                device.adapterInfo().name + " has " + std::to_string(limits.subgroupSize));
+    if (blockSize != 0 && fitThreads(blockSize) > limits.maxComputeInvocationsPerWorkgroup)
+        throw Error(ErrorKind::Unsupported,
+                    name + ": blockSize " + std::to_string(blockSize) + " needs " + std::to_string(fitThreads(blockSize)) +
+                        " invocations per workgroup; " + device.adapterInfo().name + " allows " +
+                        std::to_string(limits.maxComputeInvocationsPerWorkgroup) + ": use a smaller blockSize");
+}
+} // namespace
+
 graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, graph::TextureHandle illumination,
                                     const BmfrGuide& guide, const BmfrFitSettings& settings) {
     validate(settings, guide);
-    // One shader per output format: the image's format qualifier must be literal.
-    const rhi::ComputePipeline pipeline =
-        ctx.pipelines.get(settings.format == rhi::Format::RGBA16Float ? "bmfr/fit_rgba16f" : "bmfr/fit");
-    rhi::PushConstants params = fitParams(pipeline, settings);
-    const auto offsetX = params.slot("offsetX", rhi::ScalarType::Uint32);
-    const auto offsetY = params.slot("offsetY", rhi::ScalarType::Uint32);
-    const auto blocksX = params.slot("blocksX", rhi::ScalarType::Uint32);
-    const auto frame = params.slot("frame", rhi::ScalarType::Uint32);
-    const auto blockSize = params.slot("blockSize", rhi::ScalarType::Uint32);
+    checkDevice(ctx.pipelines.device(), settings.blockSize, name);
+    // One shader per block size and output format: the workgroup size and the image's
+    // format qualifier must be literal. With blockSize 0 the size follows the frame,
+    // so the pass holds every size's pipeline and picks one per frame.
+    const uint32_t maxThreads = ctx.pipelines.device().adapterInfo().limits.maxComputeInvocationsPerWorkgroup;
+    std::vector<FitVariant> variants;
+    for (uint32_t b : fitBlockSizes(settings.blockSize))
+        if (fitThreads(b) <= maxThreads) variants.emplace_back(b, ctx.pipelines.get(fitShader(b, settings.format)), settings);
     const BmfrFitSettings s = settings;
+    const rhi::Device device = ctx.pipelines.device();
     struct Out {
         graph::TextureHandle fitted;
     };
@@ -127,21 +168,18 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
         b.sample("albedo", guide.albedo, {.optional = true});
         b.sample("roughness", guide.roughness, {.optional = true});
         b.sample("meshid", guide.meshId, {.optional = true});
-        // Sized by the graph from its output size, so the matrix follows size changes.
-        graph::BufferInfo blocksInfo;
-        blocksInfo.sizeFromOutput = [s](rhi::Extent2D output) { return bmfrBlockBufferBytes(output, s); };
-        b.write("blocks", b.create(name + ".blocks", blocksInfo));
         o.fitted = b.write("fitted", b.create(name, fullSize(s.format)));
-        const auto group = b.bindGroup(pipeline);
+        std::vector<graph::BindGroupHandle> groups;
+        for (const FitVariant& variant : variants) groups.push_back(b.bindGroup(variant.pipeline));
         return [=](graph::PassContext& pc) mutable {
             const rhi::Extent2D size = pc.texture(o.fitted).size();
             const BmfrBlockGrid grid = bmfrBlockGrid(size, bmfrBlockSizeFor(size, s.blockSize), s.offsetBlocks, pc.frameIndex());
-            params.set(blockSize, grid.blockSize);
-            params.set(offsetX, grid.offsetX);
-            params.set(offsetY, grid.offsetY);
-            params.set(blocksX, grid.blocksX);
-            params.set(frame, uint32_t(pc.frameIndex()));
-            pc.dispatch(pipeline, group, {grid.blocksX * grid.blocksY * kThreadsPerBlock, 1}, params);
+            size_t v = 0;
+            while (v < variants.size() && variants[v].blockSize != grid.blockSize) ++v;
+            if (v == variants.size()) checkDevice(device, grid.blockSize, name);   // throws: too few invocations
+            variants[v].setGrid(grid, pc.frameIndex());
+            pc.dispatch(variants[v].pipeline, groups[v], {grid.blocksX * grid.blocksY * fitThreads(grid.blockSize), 1},
+                        variants[v].params);
         };
     });
     return out.fitted;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <hush/passes/common/atrous_lattice.hpp>
+
 namespace hush::passes {
 
 namespace {
@@ -27,8 +29,9 @@ graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name,
                                       graph::TextureHandle depth, uint32_t level, const EawSettings& s) {
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("eaw/atrous");
     // The weights' squared sigmas are derived per level, so no field maps onto them by name.
+    const uint32_t step = eawAtrousStep(level);
     rhi::PushConstants params(pipeline);
-    params.set("step", int32_t(eawAtrousStep(level)))
+    params.set("step", int32_t(step))
         .set("sigmaRt2", guardedSquare(eawColorSigma(s, level)))
         .set("sigmaN2", guardedSquare(s.sigmaN))
         .set("sigmaX2", guardedSquare(depth.valid() ? s.sigmaXRelative : s.sigmaX))
@@ -44,7 +47,9 @@ graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name,
         b.sample("depth", depth, {.optional = true});
         o.filtered = b.write("filtered", b.create(name, fullSize()));
         const auto group = b.bindGroup(pipeline);
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.filtered).size(), params); };
+        return [=](graph::PassContext& pc) {
+            pc.dispatch(pipeline, group, atrousThreads(pc.texture(o.filtered).size(), step, 2), params);
+        };
     });
     return out.filtered;
 }

@@ -123,15 +123,14 @@ uint32_t bmfrBlockSizeFor(rhi::Extent2D image, uint32_t blockSize);
 // of a block; offset 0 is (0, 0).
 std::array<uint32_t, 2> bmfrOffset64(uint32_t k);
 BmfrBlockGrid bmfrBlockGrid(rhi::Extent2D image, uint32_t blockSize, bool offsetBlocks, uint64_t frameIndex);
-// Bytes of the block-contiguous matrix buffer for `image` (worst case over offsets).
-uint64_t bmfrBlockBufferBytes(rhi::Extent2D image, const BmfrFitSettings& settings);
 
 // Adds "<name>" (one compute workgroup per block) and returns the fitted illumination
 // (settings.format, rgba32f by default, full size; rgb = T alpha, a = illumination's alpha). `illumination` is
-// the accumulated, demodulated noisy colour (rgb). The transient matrix buffer
-// "<name>.blocks" is sized by the graph from its output size at each compile
-// (graph::BufferInfo::sizeFromOutput), so the node follows size changes.
-// Throws hush::Error (InvalidArgument) on bad settings or a missing guide texture.
+// the accumulated, demodulated noisy colour (rgb). Each block's matrix lives in its
+// workgroup's registers (B^2 / 8 invocations), so the node needs no buffer and
+// follows size changes. Throws hush::Error: InvalidArgument on bad settings or a
+// missing guide texture, Unsupported where the device's subgroups are under 4
+// invocations or a fixed blockSize needs more invocations than a workgroup allows.
 graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, graph::TextureHandle illumination,
                                     const BmfrGuide& guide, const BmfrFitSettings& settings = {});
 

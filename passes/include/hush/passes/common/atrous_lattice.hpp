@@ -1,0 +1,19 @@
+#pragma once
+// How a 5x5 a-trous level is dispatched on the a-trous lattice (shaders/common/
+// atrous_lattice.glsl): one invocation per 2x2 block of pixels spaced `step` apart,
+// whose taps overlap, so that each texel is read fewer times.
+//
+// Used by eaw.atrous. svgf.atrous keeps one pixel per invocation: on the lattice it
+// measured slower (its weights, not its fetches, bound it): docs/passes/atrous-lattice.md.
+#include <cstdint>
+
+#include <hush/rhi/format.hpp>
+
+namespace hush::passes {
+
+// The invocations a level at `step` dispatches over `size` pixels: per axis, `step`
+// invocations for every cell of 2 * step pixels (the last cell rounded up).
+// `block`: the shader's HUSH_ATROUS_BLOCK (1 or 2).
+rhi::Extent2D atrousThreads(rhi::Extent2D size, uint32_t step, uint32_t block);
+
+} // namespace hush::passes

@@ -90,9 +90,7 @@ rhi::PushConstants fitParams(const rhi::ComputePipeline& pipeline, const BmfrFit
         .set("codes", codes);
     return params;
 }
-} // namespace
 
-namespace {
 // The fit shader of one block size and output format: the block size fixes the
 // workgroup (B^2 / 8 invocations, 8 matrix rows each, in registers: fit.glsl).
 std::string fitShader(uint32_t blockSize, rhi::Format format) {

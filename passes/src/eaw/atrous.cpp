@@ -7,6 +7,10 @@
 namespace hush::passes {
 
 namespace {
+// Pixels per axis per invocation: shaders/eaw/atrous.comp's HUSH_ATROUS_BLOCK (the
+// lattice's default, 2).
+constexpr uint32_t kLatticeBlock = 2;
+
 // sigma^2, floored so that the shader's division is never 0/0 (see the header).
 float guardedSquare(float sigma) {
     constexpr float kMinSigmaSquared = 1e-30f;
@@ -48,7 +52,7 @@ graph::TextureHandle addEawAtrousPass(NodeContext& ctx, const std::string& name,
         o.filtered = b.write("filtered", b.create(name, fullSize()));
         const auto group = b.bindGroup(pipeline);
         return [=](graph::PassContext& pc) {
-            pc.dispatch(pipeline, group, atrousThreads(pc.texture(o.filtered).size(), step, 2), params);
+            pc.dispatch(pipeline, group, atrousThreads(pc.texture(o.filtered).size(), step, kLatticeBlock), params);
         };
     });
     return out.filtered;

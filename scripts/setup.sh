@@ -26,6 +26,7 @@ packages=(
   nlohmann-json3-dev            # JSON scene and chain files (tracer/, passes/)
   libpng-dev                    # PNG images of the denoised frames (samples/cli)
   libcairo2-dev                 # hush sweep's plots, SVG and PNG (samples/cli)
+  libfontconfig-dev             # the plots' fonts: caches released at exit (samples/cli)
   libglfw3-dev                  # hush-viewer's window (samples/viewer; headless without it)
   catch2                        # test framework (v2)
   vulkan-validationlayers       # tests run with validation + synchronization validation

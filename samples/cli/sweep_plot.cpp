@@ -4,10 +4,12 @@
 // labelled with its configuration's name, the noisy input as a dashed line.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 
 #include <cairo-svg.h>
 #include <cairo.h>
+#include <fontconfig/fontconfig.h>
 
 #include <hush/core/error.hpp>
 
@@ -129,10 +131,26 @@ void check(cairo_surface_t* surface, const std::string& path) {
                                        cairo_status_to_string(cairo_surface_status(surface)) + ")");
 }
 
+// cairo's text loads fontconfig's configuration once per process and keeps it, with
+// some memory fontconfig itself no longer points to, until exit. Releasing both at exit
+// (cairo_debug_reset_static_data exists for memory checkers) lets LeakSanitizer hold
+// the CLI to no leaks at all, without a suppression for a font library.
+void releaseFontCachesAtExit() {
+    static const bool registered = [] {
+        std::atexit([] {
+            cairo_debug_reset_static_data();
+            FcFini();
+        });
+        return true;
+    }();
+    (void)registered;
+}
+
 } // namespace
 
 void writeSweepPlot(const SweepResult& result, const SweepSource& source, const std::string& svgPath,
                     const std::string& pngPath) {
+    releaseFontCachesAtExit();
     cairo_surface_t* svg = cairo_svg_surface_create(svgPath.c_str(), kWidth, kHeight);
     check(svg, svgPath);
     cairo_t* cr = cairo_create(svg);

@@ -39,23 +39,23 @@ endif()
 if(CONSUMER_MAKE_PROGRAM)
   list(APPEND configure_args "-DCMAKE_MAKE_PROGRAM=${CONSUMER_MAKE_PROGRAM}")
 endif()
-# A sanitized hush (CI) is static libraries that call the sanitizer runtime: the
+# A sanitized hush (scripts/sanitize.sh) is static libraries that call the sanitizer runtime: the
 # consumer must compile and link with the same -fsanitize list. The consumer is an
 # outside project, without hush's no-op dlclose (tests/sanitize/runtime_defaults.c),
 # so the Vulkan driver's leaks could not be told from its own: leak checking is off
 # for the consumer's programs only (the installed CLI below keeps it).
 set(sanitize_flags "")
-set(consumer_env "")
+set(consumer_env "")   # NAME=VALUE assignments for every consumer program's run
 if(CONSUMER_SANITIZE)
   set(sanitize_flags "-fsanitize=${CONSUMER_SANITIZE}")
   list(APPEND configure_args "-DCMAKE_C_FLAGS=${sanitize_flags}" "-DCMAKE_CXX_FLAGS=${sanitize_flags}"
        "-DCMAKE_EXE_LINKER_FLAGS=${sanitize_flags}")
-  set(consumer_env "${CMAKE_COMMAND}" -E env "ASAN_OPTIONS=detect_leaks=0")
+  list(APPEND consumer_env "ASAN_OPTIONS=detect_leaks=0")
 endif()
 run_step("configure consumer" "${CMAKE_COMMAND}" ${configure_args})
 run_step("build consumer" "${CMAKE_COMMAND}" --build "${build}")
-run_step("run consumer" ${consumer_env} "${build}/hush_consumer")
-run_step("run C consumer (CMake package)" ${consumer_env} "${build}/hush_c_consumer")
+run_step("run consumer" "${CMAKE_COMMAND}" -E env ${consumer_env} "${build}/hush_consumer")
+run_step("run C consumer (CMake package)" "${CMAKE_COMMAND}" -E env ${consumer_env} "${build}/hush_c_consumer")
 # The C API as a plain Makefile project would use it: pkg-config alone.
 find_program(PKG_CONFIG pkg-config REQUIRED)
 find_program(C_COMPILER NAMES cc gcc clang REQUIRED)
@@ -70,10 +70,7 @@ endif()
 separate_arguments(pc_flags UNIX_COMMAND "${pc_flags}")
 run_step("compile C consumer (pkg-config)" "${C_COMPILER}" -std=c11 -Wall -Wextra -Werror
          ${sanitize_flags} "${CONSUMER_SOURCE_DIR}/main.c" ${pc_flags} -lm -o "${build}/hush_c_pkgconfig")
-set(pkgconfig_env "LD_LIBRARY_PATH=${pc_dir}/..")
-if(CONSUMER_SANITIZE)
-  list(APPEND pkgconfig_env "ASAN_OPTIONS=detect_leaks=0")
-endif()
-run_step("run C consumer (pkg-config)" "${CMAKE_COMMAND}" -E env ${pkgconfig_env} "${build}/hush_c_pkgconfig")
+run_step("run C consumer (pkg-config)" "${CMAKE_COMMAND}" -E env "LD_LIBRARY_PATH=${pc_dir}/.." ${consumer_env}
+         "${build}/hush_c_pkgconfig")
 run_step("run installed CLI" "${prefix}/bin/hush" --version)
 message(STATUS "install_consumer: passed")

@@ -1,6 +1,7 @@
 // ComputePipeline with layout "auto" (reflected) or an explicit layout that the
 // shader's reflected bindings are checked against.
 #include "objects.hpp"
+#include "specialization.hpp"
 #include "vk_check.hpp"
 
 namespace hush::rhi {
@@ -109,11 +110,14 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDesc& desc) c
     checkVk(device->vk.vkCreatePipelineLayout(device->device, &layoutInfo, nullptr, &impl->layout),
             "vkCreatePipelineLayout for pipeline '" + desc.label + "'");
 
+    const Specialization specialization = specialize(desc.label, reflection, desc.constants);
+    impl->constants = desc.constants;
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module->module;
     info.stage.pName = desc.entryPoint.c_str();
+    info.stage.pSpecializationInfo = specialization.entries.empty() ? nullptr : &specialization.info;
     info.layout = impl->layout;
     checkVk(device->vk.vkCreateComputePipelines(device->device, VK_NULL_HANDLE, 1, &info, nullptr, &impl->pipeline),
             "vkCreateComputePipelines for pipeline '" + desc.label + "'");
@@ -139,6 +143,10 @@ const std::vector<PushConstantMember>& ComputePipeline::pushConstantMembers() co
 }
 std::array<uint32_t, 3> ComputePipeline::workgroupSize() const {
     return checked(impl_, "ComputePipeline")->workgroupSize;
+}
+
+const std::vector<ConstantEntry>& ComputePipeline::constants() const {
+    return checked(impl_, "ComputePipeline")->constants;
 }
 
 } // namespace hush::rhi

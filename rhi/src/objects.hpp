@@ -198,6 +198,7 @@ struct ComputePipelineImpl {
     uint32_t pushConstantBytes = 0;
     uint32_t shaderPushConstantBytes = 0;
     std::array<uint32_t, 3> workgroupSize = {1, 1, 1};
+    std::vector<ConstantEntry> constants;
     std::string label;
     ~ComputePipelineImpl();
 };

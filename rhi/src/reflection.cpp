@@ -63,6 +63,7 @@ public:
             out.pushConstantBytes = std::max(out.pushConstantBytes, uint32_t(compiler_.get_declared_struct_size(type)));
             addPushConstantMembers(r.base_type_id, out.pushConstants);
         }
+        addConstants(out.constants);
 
         uint32_t setCount = sets_.empty() ? 0 : sets_.rbegin()->first + 1;
         out.sets.resize(setCount);
@@ -137,6 +138,28 @@ private:
             }
             out.push_back(std::move(m));
         }
+    }
+
+    // Scalar float, int and uint constants: booleans and composites have no use in hush yet.
+    void addConstants(std::vector<ShaderConstant>& out) {
+        for (const auto& c : compiler_.get_specialization_constants()) {
+            const auto& constant = compiler_.get_constant(c.id);
+            const auto& type = compiler_.get_type(constant.constant_type);
+            ShaderConstant sc{.name = compiler_.get_name(c.id), .id = c.constant_id};
+            const std::string where = "specialization constant " + std::to_string(c.constant_id) + " ('" + sc.name +
+                                      "') of shader '" + label_ + "'";
+            if (sc.name.empty()) throw Error(ErrorKind::Unsupported, where + " has no name; pipelines set constants by name");
+            if (type.vecsize != 1 || type.columns != 1)
+                throw Error(ErrorKind::Unsupported, where + " is not a scalar");
+            switch (type.basetype) {
+            case spirv_cross::SPIRType::Float: sc.type = ScalarType::Float32; sc.defaultValue = constant.scalar_f32(); break;
+            case spirv_cross::SPIRType::Int: sc.type = ScalarType::Int32; sc.defaultValue = constant.scalar_i32(); break;
+            case spirv_cross::SPIRType::UInt: sc.type = ScalarType::Uint32; sc.defaultValue = constant.scalar(); break;
+            default: throw Error(ErrorKind::Unsupported, where + " is not a float, int or uint (use a uint for a flag)");
+            }
+            out.push_back(std::move(sc));
+        }
+        std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
     }
 
     void rejectUnsupported(const spirv_cross::SmallVector<spirv_cross::Resource>& list, const char* what) {

@@ -41,14 +41,25 @@ layout(push_constant) uniform Params {
     uint offsetY;
     uint blocksX;
     uint frame;
-    uint featureCount;
     float epsilon;
     float flatRange;
     float diagonalGuard;
     float zeroColumn;
     float dependentColumn;
-    uvec4 codes[2];   // feature codes, one byte each, feature m in byte m
 } params;
+
+// The feature set is a specialization constant, not a push constant: fixed per pipeline
+// (addBmfrFitPass), so the compiler folds every test on the feature count and every
+// feature's code, and unrolls the QR's loop over columns. Feature codes one byte each,
+// feature m in byte m % 4 of featureCodes<m / 4>. Used by these names only: a local
+// `const uint M = featureCount` would rename the constant in the SPIR-V (one id, the
+// last name wins), and the pipeline sets constants by name.
+layout(constant_id = 0) const uint featureCount = 10u;
+layout(constant_id = 1) const uint featureCodes0 = 0u;
+layout(constant_id = 2) const uint featureCodes1 = 0u;
+layout(constant_id = 3) const uint featureCodes2 = 0u;
+layout(constant_id = 4) const uint featureCodes3 = 0u;
+layout(constant_id = 5) const uint featureCodes4 = 0u;
 
 shared float partial[kColumns * kMaxSubgroups]; // one value per column per subgroup
 shared float total[kColumns];                   // the last reduction's result
@@ -67,13 +78,14 @@ float A[kRows][kMaxFeatures];
 vec3 Z[kRows];
 
 uint featureCode(uint m) {
-    return (params.codes[m / 16u][(m / 4u) % 4u] >> (8u * (m % 4u))) & 0xFFu;
+    uint word = m < 4u ? featureCodes0 : m < 8u ? featureCodes1 : m < 12u ? featureCodes2 : m < 16u ? featureCodes3 : featureCodes4;
+    return (word >> (8u * (m % 4u))) & 0xFFu;
 }
 
 // Feature columns at or past featureCount are never read: every loop over columns
 // skips them (a uniform branch, unlike a loop bound, keeps the indices constant).
 bool isColumnUsed(uint c) {
-    return c < params.featureCount || c >= kMaxFeatures;
+    return c < featureCount || c >= kMaxFeatures;
 }
 
 float combine(uint op, float a, float b) {
@@ -132,7 +144,6 @@ BmfrGuideTexel fetchGuide(ivec2 p, uvec2 local) {
 // 1. Raw features and colour into A and Z; the block's per-feature min / max and
 // per-channel max |z| into featureLo, featureHalfRange and colourScale.
 void loadBlock(ivec2 origin) {
-    const uint M = params.featureCount;
     float lo[kColumns], hi[kColumns];
     [[unroll]] for (uint c = 0u; c < kColumns; ++c) {
         lo[c] = 3.0e38;
@@ -149,7 +160,7 @@ void loadBlock(ivec2 origin) {
             Z[i] = texelFetch(illumination, p, 0).rgb;
         }
         [[unroll]] for (uint m = 0u; m < kMaxFeatures; ++m) {
-            if (m >= M) continue;
+            if (m >= featureCount) continue;
             A[i][m] = valid ? bmfrRawFeature(featureCode(m), g) : 0.0;
             lo[m] = valid ? min(lo[m], A[i][m]) : lo[m];
             hi[m] = valid ? max(hi[m], A[i][m]) : hi[m];
@@ -158,11 +169,11 @@ void loadBlock(ivec2 origin) {
     }
     reduceColumns(1u, lo);
     if (gl_LocalInvocationID.x == 0u) {
-        for (uint m = 0u; m < M; ++m) featureLo[m] = total[m];
+        for (uint m = 0u; m < featureCount; ++m) featureLo[m] = total[m];
     }
     reduceColumns(2u, hi);
     if (gl_LocalInvocationID.x == 0u) {
-        for (uint m = 0u; m < M; ++m) {
+        for (uint m = 0u; m < featureCount; ++m) {
             float l = featureLo[m], h = total[m];
             float halfRange = h * 0.5 - l * 0.5;
             bool isFlat = !(2.0 * halfRange > params.flatRange * max(abs(l), abs(h)));
@@ -180,7 +191,6 @@ void loadBlock(ivec2 origin) {
 // product can overflow whatever the radiance (1e-30 .. 3e38). Then each column's
 // squared norm into columnNorm2, for the relative dependency test of the QR.
 void scaleBlock(ivec2 origin) {
-    const uint M = params.featureCount;
     vec3 scale = vec3(colourScale[0], colourScale[1], colourScale[2]);
     float norm2[kColumns];
     [[unroll]] for (uint c = 0u; c < kColumns; ++c) norm2[c] = 0.0;
@@ -188,7 +198,7 @@ void scaleBlock(ivec2 origin) {
         ivec2 p = origin + ivec2(rowLocal(i));
         bool valid = insideImage(p);
         [[unroll]] for (uint m = 0u; m < kMaxFeatures; ++m) {
-            if (m >= M) continue;
+            if (m >= featureCount) continue;
             uint code = featureCode(m);
             // A flat column stays exactly 0 (no noise): noise there could only fit z's
             // own noise and regularises nothing; the QR drops the zero column.
@@ -202,7 +212,7 @@ void scaleBlock(ivec2 origin) {
     }
     reduceColumns(0u, norm2);
     if (gl_LocalInvocationID.x == 0u)
-        for (uint m = 0u; m < M; ++m) columnNorm2[m] = total[m];
+        for (uint m = 0u; m < featureCount; ++m) columnNorm2[m] = total[m];
     barrier();
 }
 
@@ -217,7 +227,7 @@ float columnOf(uint i, uint k) {
 void publishRow(uint rho) {
     uint owner = rho % kThreads, slot = rho / kThreads;
     [[unroll]] for (uint j = 0u; j < kMaxFeatures; ++j) {
-        if (j >= params.featureCount) continue;
+        if (j >= featureCount) continue;
         float v = 0.0;
         [[unroll]] for (uint i = 0u; i < kRows; ++i) v = i == slot ? A[i][j] : v;
         if (gl_LocalInvocationID.x == owner) rowK[j] = v;
@@ -238,9 +248,8 @@ void publishRow(uint rho) {
 // columns still see every row (a rank-revealing QR without pivoting). rho, the next
 // row to reflect onto, is the same in every invocation. Returns the rank.
 uint factorBlock() {
-    const uint M = params.featureCount;
     uint rho = 0u;
-    for (uint k = 0u; k < M; ++k) {
+    for (uint k = 0u; k < featureCount; ++k) {
         barrier();   // everyone is done reading rowK and total of step k - 1
         publishRow(rho);
         float dots[kColumns];
@@ -253,7 +262,7 @@ uint factorBlock() {
         }
         // Columns before k are zero in rows rho.. (reflected already): only j >= k.
         [[unroll]] for (uint j = 0u; j < kMaxFeatures; ++j) {
-            if (j < k || j >= M) continue;
+            if (j < k || j >= featureCount) continue;
             [[unroll]] for (uint i = 0u; i < kRows; ++i) dots[j] += x[i] * A[i][j];
         }
         reduceColumns(0u, dots);
@@ -283,7 +292,7 @@ uint factorBlock() {
         }
         // Columns up to k keep their values (row rho gets R, the rows below are 0).
         [[unroll]] for (uint j = 0u; j < kMaxFeatures; ++j) {
-            if (j <= k || j >= M) continue;
+            if (j <= k || j >= featureCount) continue;
             [[unroll]] for (uint i = 0u; i < kRows; ++i) A[i][j] -= v[i] * factor[j];
         }
         ++rho;
@@ -295,10 +304,9 @@ uint factorBlock() {
 // 4. Back substitution R alpha = r (Sec. 3.2, Eq. 5), one channel per invocation. A
 // diagonal entry the noise did not lift above the guard gives alpha_k = 0.
 void solveBlock(uint rho) {
-    const uint M = params.featureCount;
     uint ch = gl_LocalInvocationID.x;
     if (ch < 3u) {
-        for (uint m = 0u; m < M; ++m) alpha[m * 3u + ch] = 0.0;
+        for (uint m = 0u; m < featureCount; ++m) alpha[m * 3u + ch] = 0.0;
         float maxDiag = 0.0;
         for (uint i = 0u; i < rho; ++i) maxDiag = max(maxDiag, abs(R[i * kColumns + liveColumn[i]]));
         for (uint ii = 0u; ii < rho; ++ii) {
@@ -319,7 +327,6 @@ void solveBlock(uint rho) {
 
 // 5. y = T alpha with the noise-free T (Sec. 3.2, Eq. 6), back to radiance units.
 void storeBlock(ivec2 origin) {
-    const uint M = params.featureCount;
     vec3 scale = vec3(colourScale[0], colourScale[1], colourScale[2]);
     [[unroll]] for (uint i = 0u; i < kRows; ++i) {
         uvec2 local = rowLocal(i);
@@ -327,7 +334,7 @@ void storeBlock(ivec2 origin) {
         if (!insideImage(p)) continue;
         BmfrGuideTexel g = fetchGuide(p, local);
         vec3 y = vec3(0.0);
-        for (uint m = 0u; m < M; ++m) {
+        for (uint m = 0u; m < featureCount; ++m) {
             uint code = featureCode(m);
             float t = bmfrScaled(code, bmfrRawFeature(code, g), featureLo[m], featureHalfRange[m]);
             y += t * vec3(alpha[m * 3u], alpha[m * 3u + 1u], alpha[m * 3u + 2u]);

@@ -76,19 +76,25 @@ BmfrBlockGrid bmfrBlockGrid(rhi::Extent2D image, uint32_t blockSize, bool offset
 }
 
 namespace {
-// The constant part of the fit shaders' push constants: settings, guards, feature codes.
+// The constant part of the fit shaders' push constants: settings and guards.
 rhi::PushConstants fitParams(const rhi::ComputePipeline& pipeline, const BmfrFitSettings& settings) {
     rhi::PushConstants params(pipeline);
     setFromSettings(params, settings);
-    std::array<uint32_t, 8> codes{};   // one byte per feature, feature m in byte m
-    for (size_t m = 0; m < settings.features.size(); ++m) codes[m / 4] |= uint32_t(settings.features[m]) << (8 * (m % 4));
-    params.set("featureCount", uint32_t(settings.features.size()))
-        .set("flatRange", kBmfrFlatRange)
+    params.set("flatRange", kBmfrFlatRange)
         .set("diagonalGuard", kBmfrDiagonalGuard)
         .set("zeroColumn", kBmfrZeroColumn)
-        .set("dependentColumn", kBmfrDependentColumn)
-        .set("codes", codes);
+        .set("dependentColumn", kBmfrDependentColumn);
     return params;
+}
+
+// The feature set as the fit shaders' specialization constants (fit.glsl): the count,
+// and one byte per feature code, feature m in byte m % 4 of featureCodes<m / 4>.
+std::vector<rhi::ConstantEntry> fitConstants(const BmfrFitSettings& settings) {
+    std::array<uint32_t, (kBmfrMaxFeatures + 3) / 4> codes{};
+    for (size_t m = 0; m < settings.features.size(); ++m) codes[m / 4] |= uint32_t(settings.features[m]) << (8 * (m % 4));
+    std::vector<rhi::ConstantEntry> constants{{"featureCount", double(settings.features.size())}};
+    for (size_t w = 0; w < codes.size(); ++w) constants.push_back({"featureCodes" + std::to_string(w), double(codes[w])});
+    return constants;
 }
 
 // The fit shader of one block size and output format: the block size fixes the
@@ -150,9 +156,10 @@ graph::TextureHandle addBmfrFitPass(NodeContext& ctx, const std::string& name, g
     // format qualifier must be literal. With blockSize 0 the size follows the frame,
     // so the pass holds every size's pipeline and picks one per frame.
     const uint32_t maxThreads = ctx.pipelines.device().adapterInfo().limits.maxComputeInvocationsPerWorkgroup;
+    const std::vector<rhi::ConstantEntry> constants = fitConstants(settings);
     std::vector<FitVariant> variants;
     for (uint32_t b : fitBlockSizes(settings.blockSize))
-        if (fitThreads(b) <= maxThreads) variants.emplace_back(b, ctx.pipelines.get(fitShader(b, settings.format)), settings);
+        if (fitThreads(b) <= maxThreads) variants.emplace_back(b, ctx.pipelines.get(fitShader(b, settings.format), constants), settings);
     const BmfrFitSettings s = settings;
     const rhi::Device device = ctx.pipelines.device();
     struct Out {

@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <hush/rhi/device.hpp>
 #include <hush/rhi/pipeline.hpp>
@@ -18,6 +19,9 @@ public:
     // The pipeline (a ref-counted handle: copy it into execute lambdas) of the embedded shader `name` ("svgf/atrous"), layout reflected.
     // Throws hush::Error (NotFound) listing the shaders when there is no such shader.
     const rhi::ComputePipeline& get(std::string_view name);
+    // The same shader with specialization constants set (rhi::ComputePipelineDesc::
+    // constants): one pipeline per distinct list, so that nodes with equal settings share it.
+    const rhi::ComputePipeline& get(std::string_view name, const std::vector<rhi::ConstantEntry>& constants);
     const rhi::Device& device() const { return device_; }
 
 private:

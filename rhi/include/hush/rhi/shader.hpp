@@ -24,6 +24,18 @@ struct PushConstantMember {
     friend bool operator==(const PushConstantMember&, const PushConstantMember&) = default;
 };
 
+// A specialization constant (GLSL `layout(constant_id = N) const`; WebGPU's pipeline-
+// overridable constant): fixed when a pipeline is made (ComputePipelineDesc::constants),
+// so that the driver compiles the shader with the value folded in: loops over it get
+// constant bounds, branches on it vanish. What push constants cannot do.
+struct ShaderConstant {
+    std::string name;
+    uint32_t id = 0;                         // the constant_id
+    ScalarType type = ScalarType::Uint32;
+    double defaultValue = 0.0;               // the shader's own value
+    friend bool operator==(const ShaderConstant&, const ShaderConstant&) = default;
+};
+
 struct ShaderReflection {
     std::string entryPoint;
     std::array<uint32_t, 3> workgroupSize = {1, 1, 1};
@@ -31,6 +43,7 @@ struct ShaderReflection {
     std::vector<std::vector<BindGroupLayoutEntry>> sets;
     uint32_t pushConstantBytes = 0;
     std::vector<PushConstantMember> pushConstants;   // in offset order
+    std::vector<ShaderConstant> constants;           // in constant_id order
 };
 
 // Reflects a compute shader. Throws hush::Error naming `label` on invalid SPIR-V.

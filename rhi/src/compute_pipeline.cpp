@@ -67,8 +67,11 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDesc& desc) c
         fail(ErrorKind::InvalidArgument, "pipeline '" + desc.label + "': shader '" + module->label +
                                              "' has no compute entry point '" + desc.entryPoint + "' (it has '" +
                                              reflection.entryPoint + "')");
+    // Checked before any Vulkan object exists: a wrong constant creates nothing.
+    const Specialization specialization = specialize(desc.label, reflection, desc.constants);
     auto impl = std::make_shared<ComputePipelineImpl>();
     impl->device = impl_;
+    impl->constants = desc.constants;
     impl->module = desc.module.shared();
     impl->label = desc.label;
     impl->workgroupSize = reflection.workgroupSize;
@@ -110,8 +113,6 @@ ComputePipeline Device::createComputePipeline(const ComputePipelineDesc& desc) c
     checkVk(device->vk.vkCreatePipelineLayout(device->device, &layoutInfo, nullptr, &impl->layout),
             "vkCreatePipelineLayout for pipeline '" + desc.label + "'");
 
-    const Specialization specialization = specialize(desc.label, reflection, desc.constants);
-    impl->constants = desc.constants;
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

@@ -44,10 +44,13 @@ void main() {
     if (!hushInside(p, size)) {
         return;
     }
+    // "No surface" has one encoding, a zero normal, also where only the mesh id says
+    // so (< 0): the filters' per-tap surface tests then read normal_depth alone.
     vec3 n = texelFetch(normal, p, 0).xyz;
     float len = length(n);
-    n = len > 1e-6 ? n / len : vec3(0.0);
+    float mesh = texelFetch(meshid, p, 0).x;
+    n = len > 1e-6 && mesh >= 0.0 ? n / len : vec3(0.0);
     imageStore(normal_depth, p, vec4(n, depthAt(p)));
     imageStore(gradient_mesh, p, vec4(slope(p, ivec2(1, 0), size), slope(p, ivec2(0, 1), size),
-                                     texelFetch(meshid, p, 0).x, 0.0));
+                                     mesh, 0.0));
 }

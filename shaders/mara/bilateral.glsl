@@ -10,6 +10,8 @@
 #ifndef HUSH_MARA_BILATERAL_GLSL
 #define HUSH_MARA_BILATERAL_GLSL
 
+#include "common/normal_power.glsl"
+
 struct MaraCentre {
     vec3 normal;
     float depth;
@@ -26,7 +28,8 @@ MaraCentre maraCentre(ivec2 p) {
 }
 
 // 0 for a tap without a surface.
-float maraGeometryWeight(MaraCentre c, ivec2 q, float planeSigma, float normalPower) {
+// wholeExponent: wholeExponent(normalPower) on the host (common/normal_power.glsl).
+float maraGeometryWeight(MaraCentre c, ivec2 q, float planeSigma, float exponent, uint wholeExponent) {
     vec4 nd = texelFetch(normal_depth, q, 0);
     if (!maraHasSurface(nd)) {
         return 0.0;
@@ -34,7 +37,7 @@ float maraGeometryWeight(MaraCentre c, ivec2 q, float planeSigma, float normalPo
     float plane = abs(dot(c.normal, texelFetch(position, q, 0).xyz - c.position)) /
                   max(planeSigma * c.depth, 1e-30);
     float facing = max(dot(c.normal, nd.xyz), 0.0);
-    return exp(-min(plane * plane, 80.0)) * pow(facing, normalPower);
+    return exp(-min(plane * plane, 80.0)) * normalPower(facing, exponent, wholeExponent);
 }
 
 #endif

@@ -25,6 +25,9 @@ layout(push_constant) uniform Params {
     uint vertical;   // 0: along x, 1: along y
 } params;
 
+// normalPower if it is a whole number, else 0 (common/normal_power.glsl).
+layout(constant_id = 0) const uint wholeNormalPower = 0u;
+
 #include "mara/bilateral.glsl"
 
 // sigma = 7 + epsilon at roughness 1: 3 sigma stays below this many taps each side.
@@ -56,7 +59,7 @@ void main() {
             continue;
         }
         float w = exp(-float(k * k) * inverseTwoSigma2) *
-                  maraGeometryWeight(c, q, params.planeSigma, params.normalPower);
+                  maraGeometryWeight(c, q, params.planeSigma, params.normalPower, wholeNormalPower);
         sum += w * texelFetch(color, q, 0).rgb;
         weightSum += w;
     }

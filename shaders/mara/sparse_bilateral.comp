@@ -32,6 +32,9 @@ layout(push_constant) uniform Params {
     uint frame;
 } params;
 
+// normalPower if it is a whole number, else 0 (common/normal_power.glsl).
+layout(constant_id = 0) const uint wholeNormalPower = 0u;
+
 #include "mara/bilateral.glsl"
 
 const float kTwoPi = 6.28318530718;
@@ -69,7 +72,7 @@ void main() {
             continue;
         }
         float w = exp(-dot(offset, offset) * inverseTwoSigma2) *
-                  maraGeometryWeight(c, q, params.planeSigma, params.normalPower);
+                  maraGeometryWeight(c, q, params.planeSigma, params.normalPower, wholeNormalPower);
         sum += w * texelFetch(color, q, 0).rgb;
         weightSum += w;
     }

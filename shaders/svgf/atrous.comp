@@ -5,6 +5,7 @@
 // Eq. 1 and the variance propagation below it; weights Sec. 4.4, Eq. 2-5). The
 // formulas and every guard are spelled out in passes/include/hush/passes/svgf/atrous.hpp.
 #include "common/grid.glsl"
+#include "common/normal_power.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -23,14 +24,19 @@ layout(push_constant) uniform Params {
     float luminanceEpsilon;
 } params;
 
+// sigmaN if it is a whole number, else 0 (common/normal_power.glsl).
+layout(constant_id = 0) const uint wholeSigmaN = 0u;
+
 // B3-spline a-trous kernel (1/16, 1/4, 3/8, 1/4, 1/16), indexed by |offset|.
 const float kKernel[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
 const vec3 kRec709 = vec3(0.2126, 0.7152, 0.0722);
 const float kMaxFloat = 3.402823466e38;
 const float kMinDepthEpsilon = 1e-20;
 
-bool hasSurface(vec4 nd, vec4 gm) {
-    return gm.z >= 0.0 && dot(nd.xyz, nd.xyz) > 1e-6;
+// The surface pass zeroes the normal where there is no surface (mesh id < 0 too), so
+// a tap's test reads one texture, not two.
+bool hasSurface(vec4 nd) {
+    return dot(nd.xyz, nd.xyz) > 1e-6;
 }
 
 void main() {
@@ -42,7 +48,7 @@ void main() {
     vec4 centre = texelFetch(illum_variance, p, 0);
     vec4 ndP = texelFetch(normal_depth, p, 0);
     vec4 gmP = texelFetch(gradient_mesh, p, 0);
-    if (!hasSurface(ndP, gmP)) {
+    if (!hasSurface(ndP)) {
         // Background: nothing to stop edges with, so it is left as it is.
         imageStore(filtered, p, vec4(centre.rgb, max(centre.a, 0.0)));
         return;
@@ -67,8 +73,7 @@ void main() {
             float w = 1.0;
             if (dx != 0 || dy != 0) {
                 vec4 ndQ = texelFetch(normal_depth, q, 0);
-                vec4 gmQ = texelFetch(gradient_mesh, q, 0);
-                if (!hasSurface(ndQ, gmQ)) {
+                if (!hasSurface(ndQ)) {
                     continue;
                 }
                 // Eq. 3: deviation from the centre's depth plane, in units of its slope.
@@ -76,7 +81,7 @@ void main() {
                                (params.sigmaZ * abs(dot(gmP.xy, vec2(offset))) + depthEps));
                 // Eq. 4; pow(0, y) is avoided (undefined in GLSL for y <= 0).
                 float cosine = min(dot(ndP.xyz, ndQ.xyz), 1.0);
-                float wn = cosine > 0.0 ? pow(cosine, params.sigmaN) : 0.0;
+                float wn = cosine > 0.0 ? normalPower(cosine, params.sigmaN, wholeSigmaN) : 0.0;
                 // Eq. 5.
                 float wl = exp(-abs(lumP - dot(c.rgb, kRec709)) / lumScale);
                 w = wz * wn * wl;

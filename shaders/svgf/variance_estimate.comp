@@ -1,10 +1,22 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 // SVGF variance estimation (Schied et al. 2017, Sec. 4.2): temporal variance from the
 // integrated luminance moments, or, where the history is short, a bilateral spatial
 // estimate of moments and colour with the depth (Eq. 3) and normal (Eq. 4) weights.
+//
+// One invocation filters a row of kRow horizontally adjacent pixels: their windows
+// overlap, so each tap texel is fetched once for all of them ((kRow + 2r)(2r + 1)
+// fetches per resource for kRow pixels instead of kRow (2r + 1)^2) and used at once,
+// so nothing but the row's sums stays in registers. Every pixel adds its taps in the
+// same order as a one-pixel loop would.
 #include "common/grid.glsl"
+#include "common/normal_power.glsl"
+
+// Pixels per invocation along x; the host dispatches ceil(width / kRow) columns
+// (svgfVarianceRow in variance_estimate.cpp).
+const int kRow = 4;
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -23,53 +35,99 @@ layout(push_constant) uniform Params {
     uint shortHistoryBoost;
 } params;
 
+// sigmaN if it is a whole number, else 0 (common/normal_power.glsl).
+layout(constant_id = 0) const uint wholeSigmaN = 0u;
+
 // Eq. 3 and 4 without the luminance term. The denominator is kept positive, and
 // depths are finite, so the ratio is in [0, inf] and exp() never sees a NaN.
 float geometricWeight(vec4 centre, vec2 gradient, vec4 other, ivec2 offset) {
     float scale = params.sigmaZ * abs(dot(gradient, vec2(offset))) + params.depthEpsilon;
     float wz = exp(-abs(centre.w - other.w) / max(scale, 1e-30));
-    float wn = pow(max(0.0, dot(centre.xyz, other.xyz)), params.sigmaN);
+    float wn = normalPower(max(0.0, dot(centre.xyz, other.xyz)), params.sigmaN, wholeSigmaN);
     return wz * wn;
 }
 
 void main() {
-    ivec2 p = hushPixel();
     ivec2 size = imageSize(illum_variance);
-    if (!hushInside(p, size)) {
+    ivec2 first = ivec2(gl_GlobalInvocationID.x * kRow, gl_GlobalInvocationID.y);
+    if (!hushInside(first, size)) {
         return;
     }
-    vec3 c = texelFetch(color, p, 0).rgb;
-    vec4 mu = texelFetch(moments, p, 0);
-    float n = max(mu.z, 1.0);
-    if (n >= params.minHistoryLength) {
-        imageStore(illum_variance, p, vec4(c, max(0.0, mu.y - mu.x * mu.x)));
+    // Per pixel of the row: does it need the spatial estimate, its centre, its sums.
+    bool spatial[kRow];
+    vec4 centre[kRow];
+    vec2 gradient[kRow];
+    float n[kRow];
+    float sumW[kRow];
+    vec3 sumC[kRow];
+    vec2 sumMu[kRow];
+    bool any = false;
+    [[unroll]] for (int k = 0; k < kRow; ++k) {
+        ivec2 p = first + ivec2(k, 0);
+        spatial[k] = false;
+        if (!hushInside(p, size)) {
+            continue;
+        }
+        vec3 c = texelFetch(color, p, 0).rgb;
+        vec4 mu = texelFetch(moments, p, 0);
+        n[k] = max(mu.z, 1.0);
+        if (n[k] >= params.minHistoryLength) {
+            imageStore(illum_variance, p, vec4(c, max(0.0, mu.y - mu.x * mu.x)));
+            continue;
+        }
+        spatial[k] = true;
+        any = true;
+        centre[k] = texelFetch(normal_depth, p, 0);
+        gradient[k] = texelFetch(gradient_mesh, p, 0).xy;
+        sumW[k] = 1.0;   // the centre, whatever its normal
+        sumC[k] = c;
+        sumMu[k] = mu.xy;
+    }
+    if (!any) {
         return;
     }
-
-    vec4 centre = texelFetch(normal_depth, p, 0);
-    vec2 gradient = texelFetch(gradient_mesh, p, 0).xy;
-    float sumW = 1.0;   // the centre, whatever its normal
-    vec3 sumC = c;
-    vec2 sumMu = mu.xy;
-    for (int dy = -params.radius; dy <= params.radius; ++dy) {
-        for (int dx = -params.radius; dx <= params.radius; ++dx) {
-            ivec2 q = p + ivec2(dx, dy);
-            if ((dx == 0 && dy == 0) || !hushInside(q, size)) {
+    int r = params.radius;
+    for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r + kRow - 1; ++dx) {
+            ivec2 q = first + ivec2(dx, dy);
+            if (!hushInside(q, size)) {
                 continue;
             }
-            float w = geometricWeight(centre, gradient, texelFetch(normal_depth, q, 0), ivec2(dx, dy));
-            if (w > 0.0) {
-                sumW += w;
-                sumC += w * texelFetch(color, q, 0).rgb;
-                sumMu += w * texelFetch(moments, q, 0).xy;
+            vec4 nd = texelFetch(normal_depth, q, 0);
+            float w[kRow];
+            bool used = false;
+            [[unroll]] for (int k = 0; k < kRow; ++k) {
+                int ox = dx - k;
+                w[k] = 0.0;
+                if (spatial[k] && abs(ox) <= r && (ox != 0 || dy != 0)) {
+                    w[k] = geometricWeight(centre[k], gradient[k], nd, ivec2(ox, dy));
+                    used = used || w[k] > 0.0;
+                }
+            }
+            if (!used) {
+                continue;
+            }
+            vec3 cq = texelFetch(color, q, 0).rgb;
+            vec2 mq = texelFetch(moments, q, 0).xy;
+            [[unroll]] for (int k = 0; k < kRow; ++k) {
+                if (w[k] > 0.0) {
+                    sumW[k] += w[k];
+                    sumC[k] += w[k] * cq;
+                    sumMu[k] += w[k] * mq;
+                }
             }
         }
     }
-    vec3 meanC = sumC / sumW;   // sumW >= 1
-    vec2 meanMu = sumMu / sumW;
-    float variance = max(0.0, meanMu.y - meanMu.x * meanMu.x);
-    if (params.shortHistoryBoost != 0u) {
-        variance *= params.minHistoryLength / n;
+    [[unroll]] for (int k = 0; k < kRow; ++k) {
+        if (!spatial[k]) {
+            continue;
+        }
+        vec3 meanC = sumC[k] / sumW[k];   // sumW >= 1
+        vec2 meanMu = sumMu[k] / sumW[k];
+        float variance = max(0.0, meanMu.y - meanMu.x * meanMu.x);
+        if (params.shortHistoryBoost != 0u) {
+            variance *= params.minHistoryLength / n[k];
+        }
+        imageStore(illum_variance, first + ivec2(k, 0), vec4(meanC, variance));
     }
-    imageStore(illum_variance, p, vec4(meanC, variance));
 }

@@ -19,6 +19,7 @@ TEST_CASE("surface packs normal and depth and takes the smaller one-sided depth 
             return 2.0f + 0.25f * float(x) + 0.5f * float(y) + (x >= 10 ? 30.0f : 0.0f);
         });
         auto mesh = makeImage(w, h, 1, [](uint32_t x, uint32_t, uint32_t) { return x >= 10 ? 3.0f : 1.0f; });
+        mesh.at(w - 1, h - 1) = -1.0f;   // no surface by its mesh id, whatever its normal
 
         NodeHarness t(size);
         auto s = passes::addSurfacePass(t.ctx, "surface", t.input("normal", normal),
@@ -31,6 +32,9 @@ TEST_CASE("surface packs normal and depth and takes the smaller one-sided depth 
         INFO(w << "x" << h);
         HUSH_REQUIRE_IMAGES_MATCH(nd, ref.normalDepth, 1e-6f, 1e-6f);
         HUSH_REQUIRE_IMAGES_MATCH(gm, ref.gradientMesh, 1e-6f, 1e-6f);
+        // "No surface" has one encoding: a zero normal, the depth kept.
+        for (uint32_t c = 0; c < 3; ++c) CHECK(nd.at(w - 1, h - 1, c) == 0.0f);
+        CHECK(nd.at(w - 1, h - 1, 3) == depth.at(w - 1, h - 1));
         if (w > 11) {
             CHECK(gm.at(10, 0, 0) == Approx(0.25f));   // beside the step on its right
             CHECK(gm.at(9, 0, 0) == Approx(0.25f));    // and on its left

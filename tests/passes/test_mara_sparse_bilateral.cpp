@@ -83,6 +83,12 @@ TEST_CASE("mara sparse bilateral matches the CPU reference for a fixed and a per
         requireMatch(gpuFilter(color, g, &radius, s, frames),
                      reference::maraSparseBilateral(color, g.normalDepth, g.position, &radius, 0.0, frames - 1, p));
     }
+    // The default normalPower (32) is evaluated by repeated squaring; a fractional one by pow().
+    s.normalPower = 20.5f;
+    reference::MaraBilateralParams fractional;
+    fractional.normalPower = 20.5;
+    requireMatch(gpuFilter(color, g, nullptr, s, 1),
+                 reference::maraSparseBilateral(color, g.normalDepth, g.position, nullptr, 0.5 * 0.25 * w, 0, fractional));
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 

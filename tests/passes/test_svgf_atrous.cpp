@@ -130,6 +130,21 @@ TEST_CASE("svgf a-trous: five chained levels match the CPU reference", "[svgf-at
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 
+// sigmaN = 128 (a whole number) is evaluated by repeated squaring, any other by pow():
+// both against std::pow in the reference.
+TEST_CASE("svgf a-trous: whole and fractional normal exponents match the CPU reference", "[svgf-atrous]") {
+    test::ValidationScope scope;
+    const auto scene = edgeScene(37, 23, 5);
+    for (float sigmaN : {1.0f, 3.0f, 127.5f, 128.0f, 1000.0f}) {
+        INFO("sigmaN " << sigmaN);
+        const passes::SvgfAtrousSettings s{.sigmaN = sigmaN};
+        auto gpu = gpuLevels(scene.illum, scene.surface, s);
+        auto ref = reference::svgfAtrousLevels(scene.illum, scene.surface, s);
+        for (size_t i = 0; i < gpu.size(); ++i) HUSH_REQUIRE_IMAGES_MATCH(gpu[i], ref[i], kChainAbsTol, kChainRelTol);
+    }
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
 TEST_CASE("svgf a-trous: levels are named passes and level 0 is usable as history", "[svgf-atrous]") {
     test::ValidationScope scope;
     const uint32_t w = 19, h = 13;

@@ -83,13 +83,15 @@ void requireVarianceMatch(const FloatImage& gpu, const FloatImage& ref, float sc
 
 TEST_CASE("svgf variance matches the CPU reference on the temporal and the 7x7 bilateral branch", "[svgf-variance]") {
     test::ValidationScope scope;
-    for (auto size : {rhi::Extent2D{19, 13}, rhi::Extent2D{1, 1}, rhi::Extent2D{3, 5}}) {
+    for (auto size : {rhi::Extent2D{19, 13}, rhi::Extent2D{1, 1}, rhi::Extent2D{3, 5}, rhi::Extent2D{8, 6}}) {
         INFO(size.width << "x" << size.height);
         auto surface = testSurface(size.width, size.height);
         auto temporal = testTemporal(size.width, size.height, 3.0f, 51);
         for (const passes::SvgfVarianceSettings& s :
              {passes::SvgfVarianceSettings{}, passes::SvgfVarianceSettings{.shortHistoryBoost = false},
-              passes::SvgfVarianceSettings{.minHistoryLength = 10.0f, .radius = 1}}) {
+              passes::SvgfVarianceSettings{.minHistoryLength = 10.0f, .radius = 1},
+              // a fractional normal exponent (pow()) and a whole one (repeated squaring)
+              passes::SvgfVarianceSettings{.sigmaN = 60.5f}, passes::SvgfVarianceSettings{.sigmaN = 7.0f}}) {
             INFO("minHistory " << s.minHistoryLength << " radius " << s.radius << " boost " << s.shortHistoryBoost);
             auto gpu = runVariance(temporal, surface, s);
             requireVarianceMatch(gpu, reference::svgfVariance(temporal, surface, s), 3.0f);

@@ -1,5 +1,6 @@
 #include <hush/passes/mara/glossy_bilateral.hpp>
 
+#include <hush/passes/common/normal_power.hpp>
 #include <hush/passes/settings_push_constants.hpp>
 
 namespace hush::passes {
@@ -8,7 +9,7 @@ namespace {
 graph::TextureHandle addDirection(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
                                   graph::TextureHandle roughness, const Surface& surface, graph::TextureHandle position,
                                   const MaraGlossyBilateralSettings& settings, bool vertical) {
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get("mara/glossy_bilateral");
+    const rhi::ComputePipeline pipeline = ctx.pipelines.get("mara/glossy_bilateral", {normalPowerConstant("wholeNormalPower", settings.normalPower)});
     rhi::PushConstants params(pipeline);
     setFromSettings(params, settings);
     params.set("vertical", vertical);

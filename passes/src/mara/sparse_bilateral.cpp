@@ -1,5 +1,6 @@
 #include <hush/passes/mara/sparse_bilateral.hpp>
 
+#include <hush/passes/common/normal_power.hpp>
 #include <hush/passes/settings_push_constants.hpp>
 
 namespace hush::passes {
@@ -8,7 +9,7 @@ graph::TextureHandle addMaraSparseBilateralPass(NodeContext& ctx, const std::str
                                                 const Surface& surface, graph::TextureHandle position,
                                                 graph::TextureHandle radius,
                                                 const MaraSparseBilateralSettings& settings) {
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get("mara/sparse_bilateral");
+    const rhi::ComputePipeline pipeline = ctx.pipelines.get("mara/sparse_bilateral", {normalPowerConstant("wholeNormalPower", settings.normalPower)});
     rhi::PushConstants params(pipeline);
     setFromSettings(params, settings);
     params.set("useRadiusMap", radius.valid());

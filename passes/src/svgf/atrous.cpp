@@ -1,5 +1,6 @@
 #include <hush/passes/svgf/atrous.hpp>
 
+#include <hush/passes/common/normal_power.hpp>
 #include <hush/passes/settings_push_constants.hpp>
 #include <hush/passes/svgf/variance_prefilter.hpp>
 
@@ -13,7 +14,7 @@ uint32_t svgfAtrousStep(uint32_t level) {
 graph::TextureHandle addSvgfAtrousPass(NodeContext& ctx, const std::string& name, graph::TextureHandle illumVariance,
                                        graph::TextureHandle prefilteredVariance, const Surface& surface,
                                        uint32_t level, const SvgfAtrousSettings& s) {
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get("svgf/atrous");
+    const rhi::ComputePipeline pipeline = ctx.pipelines.get("svgf/atrous", {normalPowerConstant("wholeSigmaN", s.sigmaN)});
     rhi::PushConstants params(pipeline);
     setFromSettings(params, s);
     params.set("step", int32_t(svgfAtrousStep(level)));

@@ -2,13 +2,19 @@
 
 #include <algorithm>
 
+#include <hush/passes/common/normal_power.hpp>
 #include <hush/passes/settings_push_constants.hpp>
 
 namespace hush::passes {
 
+namespace {
+// Pixels per invocation along x: the shader's kRow.
+constexpr uint32_t kVarianceRow = 4;
+} // namespace
+
 graph::TextureHandle addSvgfVariancePass(NodeContext& ctx, const std::string& name, const SvgfTemporal& temporal,
                                          const Surface& surface, const SvgfVarianceSettings& settings) {
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get("svgf/variance_estimate");
+    const rhi::ComputePipeline pipeline = ctx.pipelines.get("svgf/variance_estimate", {normalPowerConstant("wholeSigmaN", settings.sigmaN)});
     rhi::PushConstants params(pipeline);
     setFromSettings(params, settings);
     params.set("radius", std::clamp(settings.radius, 0, 16));
@@ -21,7 +27,10 @@ graph::TextureHandle addSvgfVariancePass(NodeContext& ctx, const std::string& na
         sampleSurface(b, surface);
         o.illumVariance = b.write("illum_variance", b.create(name, fullSize()));
         const auto group = b.bindGroup(pipeline);
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.illumVariance).size(), params); };
+        return [=](graph::PassContext& pc) {
+            const rhi::Extent2D size = pc.texture(o.illumVariance).size();
+            pc.dispatch(pipeline, group, {(size.width + kVarianceRow - 1) / kVarianceRow, size.height}, params);
+        };
     });
     return out.illumVariance;
 }

@@ -24,7 +24,7 @@ SurfaceImages surface(const FloatImage& normal, const FloatImage& depth, const F
         for (uint32_t x = 0; x < depth.width; ++x) {
             const float nx = normal.at(x, y, 0), ny = normal.at(x, y, 1), nz = normal.at(x, y, 2);
             const float len = std::sqrt(nx * nx + ny * ny + nz * nz);
-            const float inv = len > 1e-6f ? 1.0f / len : 0.0f;
+            const float inv = len > 1e-6f && meshId.at(x, y) >= 0.0f ? 1.0f / len : 0.0f;   // no surface: normal 0
             s.normalDepth.at(x, y, 0) = nx * inv;
             s.normalDepth.at(x, y, 1) = ny * inv;
             s.normalDepth.at(x, y, 2) = nz * inv;

@@ -1,6 +1,7 @@
 #pragma once
 // The primary surface as the filters read it: one node packs the G-buffer into
-//   normalDepth  rgba32f  (unit world normal xyz, or 0 where none; linear depth)
+//   normalDepth  rgba32f  (unit world normal xyz, or 0 where there is no surface:
+//                          a zero normal or a mesh id < 0; linear depth)
 //   gradientMesh rgba32f  (dz/dx, dz/dy in depth units per pixel; mesh id; 0)
 // The depth gradient is the smaller one-sided difference per axis (it feeds SVGF's
 // w_z, Eq. 3, and the reprojection's depth test). The transients are named

@@ -5,6 +5,7 @@
 //   m = min of the row minima within boxRadius above and below (the box minimum of c)
 //   r = (1 - m) * boxRadius, times lowConfidenceScale where this pixel's c < lowConfidence
 // (the paper: R = screen width / 20, "a multiplier of six where c < 1/2").
+// One invocation filters a run of kRun pixels along y (mara/window_min.glsl).
 #include "common/grid.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -19,20 +20,29 @@ layout(push_constant) uniform Params {
     float lowConfidenceScale;
 } params;
 
+int column;
+
+float windowValue(int y) {
+    return texelFetch(row_min, ivec2(column, y), 0).x;
+}
+
+#include "mara/window_min.glsl"
+
 void main() {
-    ivec2 p = hushPixel();
     ivec2 size = imageSize(radius);
-    if (!hushInside(p, size)) {
+    ivec2 first = ivec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y * kRun);
+    if (!hushInside(first, size)) {
         return;
     }
-    float m = texelFetch(row_min, p, 0).x;
-    int lo = max(p.y - params.boxRadius, 0), hi = min(p.y + params.boxRadius, size.y - 1);
-    for (int y = lo; y <= hi; ++y) {
-        m = min(m, texelFetch(row_min, ivec2(p.x, y), 0).x);
+    column = first.x;
+    float mins[kRun];
+    windowMins(first.y, params.boxRadius, size.y, mins);
+    for (int k = 0; k < kRun && first.y + k < size.y; ++k) {
+        ivec2 p = first + ivec2(0, k);
+        float r = (1.0 - clamp(mins[k], 0.0, 1.0)) * float(params.boxRadius);
+        if (texelFetch(temporal, p, 0).a < params.lowConfidence) {
+            r *= params.lowConfidenceScale;
+        }
+        imageStore(radius, p, vec4(r, 0.0, 0.0, 0.0));
     }
-    float r = (1.0 - clamp(m, 0.0, 1.0)) * float(params.boxRadius);
-    if (texelFetch(temporal, p, 0).a < params.lowConfidence) {
-        r *= params.lowConfidenceScale;
-    }
-    imageStore(radius, p, vec4(r, 0.0, 0.0, 0.0));
 }

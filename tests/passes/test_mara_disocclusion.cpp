@@ -36,6 +36,25 @@ TEST_CASE("mara disocclusion: the separable minimum equals the brute-force box m
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 
+// The shaders filter runs of 8 pixels that share their windows' core (mara/window_min.glsl),
+// or each window alone where 2R + 1 < 8: radii on both sides of that, up to the whole
+// width, on random confidences and sizes that leave partial runs along both axes.
+TEST_CASE("mara disocclusion: every radius from 1 to the width equals the brute-force box minimum",
+          "[mara][mara-disocclusion]") {
+    test::ValidationScope scope;
+    const uint32_t w = 61, h = 45;
+    const auto temporal = randomImage(w, h, 4, 0.0f, 1.0f, 81);
+    for (int R : {1, 3, 4, 7, 8, 30, 61}) {
+        INFO("R " << R);
+        passes::MaraDisocclusionSettings s;
+        s.maxRadius = float(R) / float(w);
+        REQUIRE(passes::maraDisocclusionBoxRadius(s, w) == R);
+        HUSH_REQUIRE_IMAGES_MATCH(gpuRadius(temporal, s), reference::maraDisocclusion(temporal, R, 0.5, 6.0), 1e-6f,
+                                  1e-6f);
+    }
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
 TEST_CASE("mara disocclusion: R is a twentieth of the width; a hole widens the radius around it",
           "[mara][mara-disocclusion]") {
     test::ValidationScope scope;

@@ -6,6 +6,15 @@
 
 namespace hush::passes {
 
+namespace {
+// Pixels per invocation along the filtered axis: kRun in shaders/mara/window_min.glsl.
+constexpr uint32_t kMaraWindowRun = 8;
+
+uint32_t runs(uint32_t extent) {
+    return (extent + kMaraWindowRun - 1) / kMaraWindowRun;
+}
+} // namespace
+
 int maraDisocclusionBoxRadius(const MaraDisocclusionSettings& settings, uint32_t width) {
     return int(std::lround(double(settings.maxRadius) * double(width)));
 }
@@ -30,7 +39,7 @@ graph::TextureHandle addMaraDisocclusionPass(NodeContext& ctx, const std::string
         return [=](graph::PassContext& pc) mutable {
             const auto size = pc.texture(o.rowMin).size();
             rowParams.set(rowRadius, int32_t(maraDisocclusionBoxRadius(s, size.width)));
-            pc.dispatch(horizontal, group, size, rowParams);
+            pc.dispatch(horizontal, group, {runs(size.width), size.height}, rowParams);
         };
     });
     struct Out {
@@ -44,7 +53,7 @@ graph::TextureHandle addMaraDisocclusionPass(NodeContext& ctx, const std::string
         return [=](graph::PassContext& pc) mutable {
             const auto size = pc.texture(o.radius).size();
             columnParams.set(columnRadius, int32_t(maraDisocclusionBoxRadius(s, size.width)));
-            pc.dispatch(vertical, group, size, columnParams);
+            pc.dispatch(vertical, group, {size.width, runs(size.height)}, columnParams);
         };
     });
     return out.radius;

@@ -1,11 +1,23 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 // One level of SVGF's edge-avoiding a-trous filter (Schied et al. 2017, Sec. 4.3,
 // Eq. 1 and the variance propagation below it; weights Sec. 4.4, Eq. 2-5). The
 // formulas and every guard are spelled out in passes/include/hush/passes/svgf/atrous.hpp.
 #include "common/grid.glsl"
 #include "common/normal_power.glsl"
+
+// One invocation filters a row of kRow pixels `step` apart: their 5x5 windows
+// overlap, so each tap texel is fetched once for the row ((kRow + 4) x 5 fetches per
+// resource for kRow pixels instead of kRow x 25) and used at once by every pixel
+// whose window holds it. The host dispatches atrousThreads({width, 1}, step, kRow)
+// columns (svgf/atrous.cpp: kAtrousRow). Every tap is evaluated without a branch:
+// one off the image or without a surface is fetched clamped and weighs exactly 0.
+// With `continue` there instead, as in the one-pixel shader, the row layout was 2x
+// slower than one pixel per invocation (docs/passes/atrous-lattice.md). Each pixel
+// adds its taps in the one-pixel loop's order, and a skipped tap adds +0.
+const int kRow = 4;
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -39,60 +51,94 @@ bool hasSurface(vec4 nd) {
     return dot(nd.xyz, nd.xyz) > 1e-6;
 }
 
-void main() {
-    ivec2 p = hushPixel();
-    ivec2 size = imageSize(filtered);
-    if (!hushInside(p, size)) {
-        return;
-    }
-    vec4 centre = texelFetch(illum_variance, p, 0);
-    vec4 ndP = texelFetch(normal_depth, p, 0);
-    vec4 gmP = texelFetch(gradient_mesh, p, 0);
-    if (!hasSurface(ndP)) {
-        // Background: nothing to stop edges with, so it is left as it is.
-        imageStore(filtered, p, vec4(centre.rgb, max(centre.a, 0.0)));
-        return;
-    }
-    float lumP = dot(centre.rgb, kRec709);
-    // Eq. 5's denominator, > 0 by luminanceEpsilon.
-    float lumScale = params.sigmaL * sqrt(max(texelFetch(prefiltered_variance, p, 0).r, 0.0)) +
-                     params.luminanceEpsilon;
-    float depthEps = max(params.depthEpsilon * abs(ndP.w), kMinDepthEpsilon);
+// The row's first pixel: invocation x is residue x % step of cell x / step, whose
+// kRow pixels span kRow * step columns.
+ivec2 rowStart(int step) {
+    ivec2 i = ivec2(gl_GlobalInvocationID.xy);
+    int cell = i.x / step;
+    return ivec2(cell * kRow * step + (i.x - cell * step), i.y);
+}
 
-    vec3 colourSum = vec3(0.0);
-    float weightSum = 0.0;
-    float varianceSum = 0.0;
-    for (int dy = -2; dy <= 2; ++dy) {
-        for (int dx = -2; dx <= 2; ++dx) {
-            ivec2 offset = ivec2(dx, dy) * params.step;
-            ivec2 q = p + offset;
-            if (!hushInside(q, size)) {
-                continue;
-            }
-            vec4 c = texelFetch(illum_variance, q, 0);
-            float w = 1.0;
-            if (dx != 0 || dy != 0) {
-                vec4 ndQ = texelFetch(normal_depth, q, 0);
-                if (!hasSurface(ndQ)) {
-                    continue;
+void main() {
+    ivec2 size = imageSize(filtered);
+    int step = params.step;
+    ivec2 first = rowStart(step);
+    if (!hushInside(first, size)) {
+        return;
+    }
+    // Per pixel of the row: its centre terms and its sums.
+    vec4 ndP[kRow];
+    vec2 gradient[kRow];
+    float lumP[kRow];
+    float lumScale[kRow];
+    float depthEps[kRow];
+    bool filtering[kRow];
+    vec3 colourSum[kRow];
+    float weightSum[kRow];
+    float varianceSum[kRow];
+    [[unroll]] for (int k = 0; k < kRow; ++k) {
+        ivec2 p = first + ivec2(k * step, 0);
+        bool inside = hushInside(p, size);
+        ivec2 pc = min(p, size - 1);
+        ndP[k] = texelFetch(normal_depth, pc, 0);
+        filtering[k] = inside && hasSurface(ndP[k]);
+        gradient[k] = texelFetch(gradient_mesh, pc, 0).xy;
+        lumP[k] = dot(texelFetch(illum_variance, pc, 0).rgb, kRec709);
+        // Eq. 5's denominator, > 0 by luminanceEpsilon.
+        lumScale[k] = params.sigmaL * sqrt(max(texelFetch(prefiltered_variance, pc, 0).r, 0.0)) +
+                      params.luminanceEpsilon;
+        depthEps[k] = max(params.depthEpsilon * abs(ndP[k].w), kMinDepthEpsilon);
+        colourSum[k] = vec3(0.0);
+        weightSum[k] = 0.0;
+        varianceSum[k] = 0.0;
+    }
+    [[unroll]] for (int dy = -2; dy <= 2; ++dy) {
+        [[unroll]] for (int column = 0; column < kRow + 4; ++column) {
+            ivec2 q = first + ivec2(column - 2, dy) * step;
+            bool insideQ = hushInside(q, size);
+            ivec2 qc = clamp(q, ivec2(0), size - 1);
+            vec4 c = texelFetch(illum_variance, qc, 0);
+            vec4 ndQ = texelFetch(normal_depth, qc, 0);
+            bool surfaceQ = insideQ && hasSurface(ndQ);
+            float lumQ = dot(c.rgb, kRec709);
+            [[unroll]] for (int k = 0; k < kRow; ++k) {
+                int dx = column - 2 - k;
+                if (dx < -2 || dx > 2) {
+                    continue;   // decided at compile time: the loops are unrolled
                 }
-                // Eq. 3: deviation from the centre's depth plane, in units of its slope.
-                float wz = exp(-abs(ndP.w - ndQ.w) /
-                               (params.sigmaZ * abs(dot(gmP.xy, vec2(offset))) + depthEps));
-                // Eq. 4; pow(0, y) is avoided (undefined in GLSL for y <= 0).
-                float cosine = min(dot(ndP.xyz, ndQ.xyz), 1.0);
-                float wn = cosine > 0.0 ? normalPower(cosine, params.sigmaN, wholeSigmaN) : 0.0;
-                // Eq. 5.
-                float wl = exp(-abs(lumP - dot(c.rgb, kRec709)) / lumScale);
-                w = wz * wn * wl;
+                float w;
+                if (dx == 0 && dy == 0) {
+                    w = 1.0;
+                } else {
+                    vec2 offset = vec2(dx, dy) * float(step);
+                    // Eq. 3: deviation from the centre's depth plane, in units of its slope.
+                    float wz = exp(-abs(ndP[k].w - ndQ.w) /
+                                   (params.sigmaZ * abs(dot(gradient[k], offset)) + depthEps[k]));
+                    // Eq. 4; pow(0, y) is avoided (undefined in GLSL for y <= 0).
+                    float cosine = min(dot(ndP[k].xyz, ndQ.xyz), 1.0);
+                    float wn = cosine > 0.0 ? normalPower(cosine, params.sigmaN, wholeSigmaN) : 0.0;
+                    // Eq. 5.
+                    float wl = exp(-abs(lumP[k] - lumQ) / lumScale[k]);
+                    w = surfaceQ ? wz * wn * wl : 0.0;
+                }
+                float hw = kKernel[abs(dx)] * kKernel[abs(dy)] * w;
+                colourSum[k] += hw * c.rgb;
+                weightSum[k] += hw;
+                varianceSum[k] += hw * hw * max(c.a, 0.0);
             }
-            float hw = kKernel[abs(dx)] * kKernel[abs(dy)] * w;
-            colourSum += hw * c.rgb;
-            weightSum += hw;
-            varianceSum += hw * hw * max(c.a, 0.0);
         }
     }
-    // weightSum >= (3/8)^2 from the centre tap.
-    imageStore(filtered, p,
-               vec4(colourSum / weightSum, min(varianceSum / (weightSum * weightSum), kMaxFloat)));
+    [[unroll]] for (int k = 0; k < kRow; ++k) {
+        ivec2 p = first + ivec2(k * step, 0);
+        if (!hushInside(p, size)) {
+            continue;
+        }
+        // Background: nothing to stop edges with, so it is left as it is. Else
+        // weightSum >= (3/8)^2 from the centre tap.
+        vec4 centre = texelFetch(illum_variance, p, 0);
+        vec4 result = filtering[k] ? vec4(colourSum[k] / weightSum[k],
+                                          min(varianceSum[k] / (weightSum[k] * weightSum[k]), kMaxFloat))
+                                   : vec4(centre.rgb, max(centre.a, 0.0));
+        imageStore(filtered, p, result);
+    }
 }

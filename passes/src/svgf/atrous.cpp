@@ -1,10 +1,15 @@
 #include <hush/passes/svgf/atrous.hpp>
 
+#include <hush/passes/common/atrous_lattice.hpp>
 #include <hush/passes/common/normal_power.hpp>
 #include <hush/passes/settings_push_constants.hpp>
 #include <hush/passes/svgf/variance_prefilter.hpp>
 
 namespace hush::passes {
+
+namespace {
+constexpr uint32_t kAtrousRow = 4;   // pixels per invocation: kRow in shaders/svgf/atrous.comp
+} // namespace
 
 uint32_t svgfAtrousStep(uint32_t level) {
     constexpr uint32_t kMaxLevel = 16;
@@ -27,7 +32,10 @@ graph::TextureHandle addSvgfAtrousPass(NodeContext& ctx, const std::string& name
         sampleSurface(b, surface);
         o.filtered = b.write("filtered", b.create(name, fullSize()));
         const auto group = b.bindGroup(pipeline);
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.filtered).size(), params); };
+        return [=](graph::PassContext& pc) {
+            const rhi::Extent2D size = pc.texture(o.filtered).size();
+            pc.dispatch(pipeline, group, {atrousThreads({size.width, 1}, svgfAtrousStep(level), kAtrousRow).width, size.height}, params);
+        };
     });
     return out.filtered;
 }

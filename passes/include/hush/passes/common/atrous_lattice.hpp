@@ -3,8 +3,8 @@
 // atrous_lattice.glsl): one invocation per 2x2 block of pixels spaced `step` apart,
 // whose taps overlap, so that each texel is read fewer times.
 //
-// Used by eaw.atrous. svgf.atrous keeps one pixel per invocation: on the lattice it
-// measured slower (its weights, not its fetches, bound it): docs/passes/atrous-lattice.md.
+// Used by eaw.atrous (2x2 blocks) and svgf.atrous (rows of 4 pixels along x: the
+// x extent only, with block 4): docs/passes/atrous-lattice.md.
 #include <cstdint>
 
 #include <hush/rhi/format.hpp>

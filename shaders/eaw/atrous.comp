@@ -83,11 +83,9 @@ vec4 filterPixel(ivec2 p, int b) {
     float luminanceSum = 0.0, kernelSum = 0.0;
     [[unroll]] for (int t = 0; t < 25; ++t) {
         int q = latticeTap(b, t);
-        if (t != 12 && !hasSurface(tapNormal[q])) {
-            continue;
-        }
-        luminanceSum += kernelWeight(t) * luminance(tapColour[q].rgb);
-        kernelSum += kernelWeight(t);
+        float k = t != 12 && !hasSurface(tapNormal[q]) ? 0.0 : kernelWeight(t);
+        luminanceSum += k * luminance(tapColour[q].rgb);
+        kernelSum += k;
     }
     // Scale-free: distances over the local mean luminance (floored at 1e-20), as the
     // position weight is over depth; a frame 1000x brighter is filtered alike.
@@ -101,9 +99,9 @@ vec4 filterPixel(ivec2 p, int b) {
     float weightSum = 0.0;
     [[unroll]] for (int t = 0; t < 25; ++t) {
         int q = latticeTap(b, t);
-        if (t != 12 && !hasSurface(tapNormal[q])) {
-            continue;
-        }
+        // Without a surface (or off the image) a tap weighs 0 by a select, not a
+        // `continue`: lavapipe runs the branch-free loop 4-9 % faster (docs/benchmarks.md).
+        bool counts = t == 12 || hasSurface(tapNormal[q]);
         vec3 cQ = tapColour[q].rgb;
         float w = 1.0;
         if (t != 12) {
@@ -111,7 +109,7 @@ vec4 filterPixel(ivec2 p, int b) {
             w = exp(-(squaredDistance(centre.rgb, cQ) / sigmaRt2 + squaredDistance(nP, tapNormal[q]) / params.sigmaN2 +
                       squaredDistance(xP, tapPosition[q]) / (params.sigmaX2 * xScale2)));
         }
-        float hw = kernelWeight(t) * w;
+        float hw = counts ? kernelWeight(t) * w : 0.0;
         colourSum += hw * cQ;
         weightSum += hw;
     }

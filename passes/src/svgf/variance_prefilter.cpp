@@ -2,6 +2,10 @@
 
 namespace hush::passes {
 
+namespace {
+constexpr uint32_t kPrefilterRow = 4;   // pixels per invocation: kRow in shaders/svgf/variance_prefilter.comp
+} // namespace
+
 graph::TextureHandle addSvgfVariancePrefilterPass(NodeContext& ctx, const std::string& name,
                                                   graph::TextureHandle illumVariance) {
     const rhi::ComputePipeline pipeline = ctx.pipelines.get("svgf/variance_prefilter");
@@ -13,7 +17,10 @@ graph::TextureHandle addSvgfVariancePrefilterPass(NodeContext& ctx, const std::s
         o.prefilteredVariance =
             b.write("prefiltered_variance", b.create(name, fullSize(rhi::Format::R32Float)));
         const auto group = b.bindGroup(pipeline);
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.prefilteredVariance).size()); };
+        return [=](graph::PassContext& pc) {
+            const rhi::Extent2D size = pc.texture(o.prefilteredVariance).size();
+            pc.dispatch(pipeline, group, {(size.width + kPrefilterRow - 1) / kPrefilterRow, size.height});
+        };
     });
     return out.prefilteredVariance;
 }

@@ -14,10 +14,11 @@ constexpr uint32_t kVarianceRow = 4;
 
 graph::TextureHandle addSvgfVariancePass(NodeContext& ctx, const std::string& name, const SvgfTemporal& temporal,
                                          const Surface& surface, const SvgfVarianceSettings& settings) {
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get("svgf/variance_estimate", {normalPowerConstant("wholeSigmaN", settings.sigmaN)});
+    const rhi::ComputePipeline pipeline = ctx.pipelines.get(
+        "svgf/variance_estimate",
+        {normalPowerConstant("wholeSigmaN", settings.sigmaN), {"radius", double(std::clamp(settings.radius, 0, 16))}});
     rhi::PushConstants params(pipeline);
     setFromSettings(params, settings);
-    params.set("radius", std::clamp(settings.radius, 0, 16));
     struct Out {
         graph::TextureHandle illumVariance;
     };

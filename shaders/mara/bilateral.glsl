@@ -14,30 +14,30 @@
 
 struct MaraCentre {
     vec3 normal;
-    float depth;
     vec3 position;
+    float inversePlaneScale;   // 1 / (planeSigma * z_c)
 };
 
 bool maraHasSurface(vec4 normalDepth) {
     return dot(normalDepth.xyz, normalDepth.xyz) > 1e-6;
 }
 
-MaraCentre maraCentre(ivec2 p) {
+MaraCentre maraCentre(ivec2 p, float planeSigma) {
     vec4 nd = texelFetch(normal_depth, p, 0);
-    return MaraCentre(nd.xyz, nd.w, texelFetch(position, p, 0).xyz);
+    return MaraCentre(nd.xyz, texelFetch(position, p, 0).xyz, 1.0 / max(planeSigma * nd.w, 1e-30));
 }
 
-// 0 for a tap without a surface.
+// The weight of a tap with normal_depth `nd` and world position `x`: exp(-gaussianExponent)
+// (the caller's spatial Gaussian, folded into the plane weight's exp()) * w_plane *
+// w_normal; 0 for a tap without a surface. Without a branch: on lavapipe a tap that
+// branches costs about twice one that is computed and then weighed 0
+// (docs/benchmarks.md, issue 14).
 // wholeExponent: wholeExponent(normalPower) on the host (common/normal_power.glsl).
-float maraGeometryWeight(MaraCentre c, ivec2 q, float planeSigma, float exponent, uint wholeExponent) {
-    vec4 nd = texelFetch(normal_depth, q, 0);
-    if (!maraHasSurface(nd)) {
-        return 0.0;
-    }
-    float plane = abs(dot(c.normal, texelFetch(position, q, 0).xyz - c.position)) /
-                  max(planeSigma * c.depth, 1e-30);
+float maraTapWeight(MaraCentre c, vec4 nd, vec3 x, float gaussianExponent, float exponent, uint wholeExponent) {
+    float plane = abs(dot(c.normal, x - c.position)) * c.inversePlaneScale;
     float facing = max(dot(c.normal, nd.xyz), 0.0);
-    return exp(-min(plane * plane, 80.0)) * normalPower(facing, exponent, wholeExponent);
+    float w = exp(-(gaussianExponent + min(plane * plane, 80.0))) * normalPower(facing, exponent, wholeExponent);
+    return maraHasSurface(nd) ? w : 0.0;
 }
 
 #endif

@@ -6,6 +6,14 @@
 namespace hush::passes {
 
 namespace {
+constexpr uint32_t kGlossyRow = 4;   // pixels per invocation along the axis: kRow in shaders/mara/glossy_bilateral.comp
+
+// One invocation per kGlossyRow pixels along the blur's axis.
+rhi::Extent2D rowThreads(rhi::Extent2D size, bool vertical) {
+    const auto rows = [](uint32_t n) { return (n + kGlossyRow - 1) / kGlossyRow; };
+    return vertical ? rhi::Extent2D{size.width, rows(size.height)} : rhi::Extent2D{rows(size.width), size.height};
+}
+
 graph::TextureHandle addDirection(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
                                   graph::TextureHandle roughness, const Surface& surface, graph::TextureHandle position,
                                   const MaraGlossyBilateralSettings& settings, bool vertical) {
@@ -23,7 +31,9 @@ graph::TextureHandle addDirection(NodeContext& ctx, const std::string& name, gra
         b.sample("position", position);
         o.filtered = b.write("filtered", b.create(name, fullSize()));
         const auto group = b.bindGroup(pipeline);
-        return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.filtered).size(), params); };
+        return [=](graph::PassContext& pc) {
+            pc.dispatch(pipeline, group, rowThreads(pc.texture(o.filtered).size(), vertical), params);
+        };
     });
     return out.filtered;
 }

@@ -20,12 +20,15 @@ layout(set = 0, binding = 4) uniform texture2D reprojection;
 layout(push_constant) uniform Params {
     float alpha;             // weight of the current frame
     float varianceGamma;     // box half-size in standard deviations (box == 1)
-    uint box;                // TaaBox: 0 min/max, 1 mean +- gamma * stddev
-    uint rectify;            // TaaRectify: 0 clamp, 1 clip towards the box centre
-    uint historyFilter;      // TaaHistoryFilter: 0 bilinear, 1 Catmull-Rom
-    uint useReprojection;    // 1: a reprojection decision is bound
     uint historyValid;       // 0 on the first frame and after a reset
 } params;
+
+// The choices as specialization constants, so that the driver compiles only the
+// chosen path: as push constants every pixel carried all of them (docs/benchmarks.md).
+layout(constant_id = 0) const uint box = 0u;              // TaaBox: 0 min/max, 1 mean +- gamma * stddev
+layout(constant_id = 1) const uint rectify = 1u;          // TaaRectify: 0 clamp, 1 clip towards the box centre
+layout(constant_id = 2) const uint historyFilter = 1u;    // TaaHistoryFilter: 0 bilinear, 1 Catmull-Rom
+layout(constant_id = 3) const uint useReprojection = 0u;  // 1: a reprojection decision is bound
 
 #include "common/color_spaces.glsl"
 #include "common/reprojection.glsl"
@@ -60,7 +63,7 @@ bool wholeFootprint(vec4 decision) {
 bool historyAt(ivec2 p, ivec2 size, out vec3 colour) {
     colour = vec3(0.0);
     vec2 m = texelFetch(motion, p, 0).rg;
-    if (params.useReprojection != 0u) {
+    if (useReprojection != 0u) {
         vec4 decision = texelFetch(reprojection, p, 0);
         ReprojectionFootprint footprint;
         if (!reprojectionFootprint(decision, footprint)) {
@@ -71,7 +74,7 @@ bool historyAt(ivec2 p, ivec2 size, out vec3 colour) {
             return true;
         }
     }
-    return resampleTaaHistory(p, m, size, params.historyFilter, colour);
+    return resampleTaaHistory(p, m, size, historyFilter, colour);
 }
 
 struct Box {
@@ -83,7 +86,7 @@ Box neighbourhoodBox(ivec2 p, ivec2 size) {
     for (int k = 0; k < 9; ++k) {
         s[k] = rgbToYCoCg(currentAt(p + ivec2(k % 3 - 1, k / 3 - 1), size));
     }
-    if (params.box == 1u) {
+    if (box == 1u) {
         // Variance clipping (Salvi 2016): mean +- gamma * stddev. The deviations are
         // divided by the largest one before squaring, so squares neither overflow
         // (1e6^2 is fine, but not 1e20^2) nor underflow (1e-30^2 would be 0 in fp32).
@@ -150,7 +153,7 @@ void main() {
     if (haveHistory) {
         Box b = neighbourhoodBox(p, size);
         vec3 h = rgbToYCoCg(hist);
-        h = params.rectify == 1u ? clipToBox(h, b) : clamp(h, b.lo, b.hi);
+        h = rectify == 1u ? clipToBox(h, b) : clamp(h, b.lo, b.hi);
         // A point of the YCoCg box need not be a colour with non-negative RGB (nor
         // need a Catmull-Rom value: its negative lobes overshoot at edges).
         result = max(mix(yCoCgToRgb(h), cur, clamp(params.alpha, 0.0, 1.0)), vec3(0.0));

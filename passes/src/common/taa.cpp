@@ -7,10 +7,13 @@ namespace hush::passes {
 graph::TextureHandle addTaaPass(NodeContext& ctx, const std::string& name, graph::TextureHandle color,
                                 graph::TextureHandle motion, const TaaSettings& settings,
                                 graph::TextureHandle reprojection) {
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get("common/taa");
+    const rhi::ComputePipeline pipeline =
+        ctx.pipelines.get("common/taa", {{"box", double(settings.box)},
+                                         {"rectify", double(settings.rectify)},
+                                         {"historyFilter", double(settings.historyFilter)},
+                                         {"useReprojection", reprojection.valid() ? 1.0 : 0.0}});
     rhi::PushConstants params(pipeline);
     setFromSettings(params, settings);
-    params.set("useReprojection", reprojection.valid());
     const auto historyValid = params.slot("historyValid", rhi::ScalarType::Uint32);
     struct Out {
         graph::TextureHandle resolved;

@@ -70,7 +70,7 @@ void main() {
     vec4 ndP[kRow];
     vec2 gradient[kRow];
     float lumP[kRow];
-    float lumScale[kRow];
+    float inverseLumScale[kRow];
     float depthEps[kRow];
     bool filtering[kRow];
     vec3 colourSum[kRow];
@@ -85,8 +85,8 @@ void main() {
         gradient[k] = texelFetch(gradient_mesh, pc, 0).xy;
         lumP[k] = dot(texelFetch(illum_variance, pc, 0).rgb, kRec709);
         // Eq. 5's denominator, > 0 by luminanceEpsilon.
-        lumScale[k] = params.sigmaL * sqrt(max(texelFetch(prefiltered_variance, pc, 0).r, 0.0)) +
-                      params.luminanceEpsilon;
+        inverseLumScale[k] = 1.0 / (params.sigmaL * sqrt(max(texelFetch(prefiltered_variance, pc, 0).r, 0.0)) +
+                                    params.luminanceEpsilon);
         depthEps[k] = max(params.depthEpsilon * abs(ndP[k].w), kMinDepthEpsilon);
         colourSum[k] = vec3(0.0);
         weightSum[k] = 0.0;
@@ -112,14 +112,15 @@ void main() {
                 } else {
                     vec2 offset = vec2(dx, dy) * float(step);
                     // Eq. 3: deviation from the centre's depth plane, in units of its slope.
-                    float wz = exp(-abs(ndP[k].w - ndQ.w) /
-                                   (params.sigmaZ * abs(dot(gradient[k], offset)) + depthEps[k]));
+                    float ez = abs(ndP[k].w - ndQ.w) /
+                               (params.sigmaZ * abs(dot(gradient[k], offset)) + depthEps[k]);
                     // Eq. 4; pow(0, y) is avoided (undefined in GLSL for y <= 0).
                     float cosine = min(dot(ndP[k].xyz, ndQ.xyz), 1.0);
                     float wn = cosine > 0.0 ? normalPower(cosine, params.sigmaN, wholeSigmaN) : 0.0;
-                    // Eq. 5.
-                    float wl = exp(-abs(lumP[k] - lumQ) / lumScale[k]);
-                    w = surfaceQ ? wz * wn * wl : 0.0;
+                    // Eq. 5; Eq. 3's and Eq. 5's exponentials as one exp(): a tap costs one.
+                    float el = abs(lumP[k] - lumQ) * inverseLumScale[k];
+                    float wzl = exp(-(ez + el));
+                    w = surfaceQ ? wzl * wn : 0.0;
                 }
                 float hw = kKernel[abs(dx)] * kKernel[abs(dy)] * w;
                 colourSum[k] += hw * c.rgb;

@@ -1,16 +1,20 @@
 #include "sampling.hpp"
 
 #include <algorithm>
+#include <array>
 #include <iterator>
+#include <utility>
 
 namespace hush::tracer::detail {
 
 namespace {
 constexpr uint32_t kPrimes[] = {2,  3,  5,  7,  11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53,
                                 59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107, 109, 113, 127, 131};
-}
 
-float radicalInverse(uint32_t base, uint64_t index) {
+// Inlined into a caller with a constant base, the divisions become multiplications
+// (the variable-base loop's 64-bit divisions were most of the sampler's time); the
+// arithmetic, and so every sample, is the same.
+[[gnu::always_inline]] inline float radicalInverseLoop(uint32_t base, uint64_t index) {
     const double inverseBase = 1.0 / base;
     double factor = inverseBase, value = 0.0;
     while (index > 0) {
@@ -22,12 +26,29 @@ float radicalInverse(uint32_t base, uint64_t index) {
     return std::min(float(value), kOneMinusEpsilon);
 }
 
+template <uint32_t Base>
+float radicalInverseIn(uint64_t index) {
+    return radicalInverseLoop(Base, index);
+}
+
+using RadicalInverseFn = float (*)(uint64_t);
+
+template <size_t... I>
+constexpr std::array<RadicalInverseFn, sizeof...(I)> radicalInverseTable(std::index_sequence<I...>) {
+    return {&radicalInverseIn<kPrimes[I]>...};
+}
+constexpr auto kRadicalInverse = radicalInverseTable(std::make_index_sequence<std::size(kPrimes)>());
+
+} // namespace
+
+float radicalInverse(uint32_t base, uint64_t index) { return radicalInverseLoop(base, index); }
+
 float PixelSampler::next() {
     const uint32_t d = dimension_++;
     const uint32_t key = hashCombine(pixelKey_, d);
     const float offset = float(key >> 8) * 0x1p-24f;
     if (d < std::size(kPrimes)) {
-        float v = radicalInverse(kPrimes[d], index_) + offset;
+        float v = kRadicalInverse[d](index_) + offset;
         v -= std::floor(v);
         return std::min(v, kOneMinusEpsilon);
     }

@@ -60,7 +60,8 @@ glm::vec3 finiteOrZero(glm::vec3 v) {
 }
 
 // The frame's images by channel, looked up once per frame rather than once per
-// pixel and channel (the map's lookups were 5-8 % of a 1-spp frame's time).
+// pixel and channel (with those map lookups the per-pixel loop took 8.5 % of a
+// 1-spp frame's time; docs/benchmarks.md, "Less work around Embree").
 class ChannelTable {
 public:
     explicit ChannelTable(Frame& frame) {

@@ -23,7 +23,7 @@
 
 const uint kBlock = HUSH_BMFR_FIT_BLOCK;
 const uint kRows = 8u;                              // matrix rows per invocation
-const uint kThreads = kBlock * kBlock / kRows;      // 32, 128, 512
+const uint kThreads = kBlock * kBlock / kRows;      // 8, 32, 128, 512
 layout(local_size_x = HUSH_BMFR_FIT_BLOCK * HUSH_BMFR_FIT_BLOCK / 8) in;
 const uint kMaxFeatures = 17u;
 const uint kColumns = kMaxFeatures + 3u;            // colour columns at kMaxFeatures + c
@@ -108,10 +108,12 @@ void reduceColumns(uint op, float values[kColumns]) {
     }
     barrier();
     uint tid = gl_LocalInvocationID.x;
-    if (tid < kColumns && isColumnUsed(tid)) {
-        float v = partial[tid * kMaxSubgroups];
-        for (uint g = 1u; g < gl_NumSubgroups; ++g) v = combine(op, v, partial[tid * kMaxSubgroups + g]);
-        total[tid] = v;
+    // An 8x8 block has 8 invocations for up to 20 columns: each combines every kThreads-th.
+    for (uint c = tid; c < kColumns; c += kThreads) {
+        if (!isColumnUsed(c)) continue;
+        float v = partial[c * kMaxSubgroups];
+        for (uint g = 1u; g < gl_NumSubgroups; ++g) v = combine(op, v, partial[c * kMaxSubgroups + g]);
+        total[c] = v;
     }
     barrier();
 }

@@ -68,7 +68,7 @@ TEST_CASE("knobs expand into one chain file per combination of their values", "[
     CHECK_THROWS_WITH(expandConfigs({"svgf"}, {parseKnob("svgf.atrous.iterashuns=2")}),
                       Catch::Contains("unknown field 'iterashuns'"));
     CHECK_THROWS_WITH(expandConfigs({"bmfr"}, {parseKnob("bmfr.fit.blockSize=16,48")}),
-                      Catch::Contains("must be 0, 16, 32 or 64"));
+                      Catch::Contains("must be 0, 8, 16, 32 or 64"));
     CHECK_THROWS_WITH(parseKnob("svgf.atrous.iterations"), Catch::Contains("expected <chain>.<setting>=<values>"));
     CHECK_THROWS_WITH(parseKnob("svgf=1"), Catch::Contains("expected <chain>.<setting>"));
 }

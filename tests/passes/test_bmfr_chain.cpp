@@ -138,7 +138,7 @@ TEST_CASE("bmfr chain settings errors name the field", "[bmfr][bmfr-chain][chain
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"accumulate": {"minWeight": 0}}})"),
                Contains("settings.accumulate.minWeight"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"blockSize": 24}}})"),
-               Contains("settings.fit.blockSize") && Contains("0, 16, 32 or 64"));
+               Contains("settings.fit.blockSize") && Contains("0, 8, 16, 32 or 64"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"features": ["one", "nx"]}}})"),
                Contains("settings.fit.features[1]") && Contains("unknown value 'nx'") && Contains("'normalX'"));
     CHECK_THAT(errorOf(R"({"base": "bmfr", "settings": {"fit": {"features": []}}})"),

@@ -65,18 +65,19 @@ TEST_CASE("bmfr block size 0 keeps the paper's block count: 32 pixels at 720 lin
     using passes::bmfrBlockSizeFor;
     CHECK(bmfrBlockSizeFor({1280, 720}, 0) == 32);   // the paper's frame
     CHECK(bmfrBlockSizeFor({128, 128}, 0) == 16);
+    CHECK(bmfrBlockSizeFor({16, 8}, 0) == 16);       // 8 only when given
     CHECK(bmfrBlockSizeFor({640, 360}, 0) == 16);
     CHECK(bmfrBlockSizeFor({4096, 509}, 0) == 16);   // the boundaries: geometric means of 16, 32, 64
     CHECK(bmfrBlockSizeFor({16, 510}, 0) == 32);
     CHECK(bmfrBlockSizeFor({16, 1018}, 0) == 32);
     CHECK(bmfrBlockSizeFor({16, 1019}, 0) == 64);
     CHECK(bmfrBlockSizeFor({3840, 2160}, 0) == 64);
-    for (uint32_t B : {16u, 32u, 64u}) CHECK(bmfrBlockSizeFor({128, 128}, B) == B);   // given: kept
+    for (uint32_t B : {8u, 16u, 32u, 64u}) CHECK(bmfrBlockSizeFor({128, 128}, B) == B);   // given: kept
 }
 
 TEST_CASE("bmfr fit matches the CPU reference on random blocks", "[bmfr]") {
     test::ValidationScope scope;
-    for (uint32_t B : {0u, 16u, 32u, 64u}) {   // 0: follows the frame (16 here)
+    for (uint32_t B : {0u, 8u, 16u, 32u, 64u}) {   // 0: follows the frame (16 here)
         const Scene sc = randomScene(48, 40, 100 + B);
         passes::BmfrFitSettings s;
         s.blockSize = B;
@@ -164,7 +165,7 @@ TEST_CASE("bmfr fit rejects bad settings and missing guides", "[bmfr]") {
         CHECK_THROWS_AS(passes::addBmfrFitPass(t.ctx, "bmfr.fit", illum, guide, s), Error);
     };
     passes::BmfrFitSettings s;
-    s.blockSize = 8;
+    s.blockSize = 24;
     bad(s, g);
     s = {};
     s.epsilon = -1.0f;

@@ -112,7 +112,7 @@ TEST_CASE("bmfr fit on rank-deficient blocks is finite and near the noise-free l
 
 TEST_CASE("bmfr fit on sizes that are not block multiples, and 1x1", "[bmfr]") {
     test::ValidationScope scope;
-    for (uint32_t B : {16u, 32u, 64u}) {
+    for (uint32_t B : {8u, 16u, 32u, 64u}) {
         const Scene sc = realLookingScene(70, 45, 10 + B);
         passes::BmfrFitSettings s;
         s.blockSize = B;

@@ -38,7 +38,7 @@ struct Range {
 };
 inline constexpr double kUnbounded = std::numeric_limits<float>::max();
 
-// The only values an integer field accepts (BMFR's block size: 0, 16, 32 or 64).
+// The only values an integer field accepts (BMFR's block size: 0, 8, 16, 32 or 64).
 template <size_t N> struct Choices {
     uint32_t values[N];
 };

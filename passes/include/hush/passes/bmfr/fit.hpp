@@ -53,7 +53,7 @@ struct BmfrGuide {
 };
 
 struct BmfrFitSettings {
-    // 16, 32 or 64 pixels; 0 (the default): follows the frame (bmfrBlockSizeFor). Sec.
+    // 8, 16, 32 or 64 pixels; 0 (the default): follows the frame (bmfrBlockSizeFor). Sec.
     // 6.1 uses 32 x 32 at 1280x720 (64 x 64 gave the best quality, 32 more parallel
     // work): 40 x 23 blocks. Fixed at 32, a 128x128 frame has 16 blocks, too few and
     // too large for the features to represent the light in each (Sec. 8 (1)); measured
@@ -84,7 +84,7 @@ inline constexpr EnumNames<BmfrFeature, kBmfrFeatureKinds> kBmfrFeatureNames{{
 }};
 
 template <class V> void describe(V&& v, BmfrFitSettings& s) {
-    v.field("blockSize", s.blockSize, Choices<4>{0, 16, 32, 64});
+    v.field("blockSize", s.blockSize, Choices<5>{0, 8, 16, 32, 64});
     v.field("epsilon", s.epsilon, Range{0.0, kUnbounded});
     v.field("features", s.features, kBmfrFeatureNames, kBmfrMaxFeatures);
     v.field("offsetBlocks", s.offsetBlocks);
@@ -114,10 +114,10 @@ struct BmfrBlockGrid {
     uint32_t offsetX = 0, offsetY = 0;   // in [0, blockSize)
     uint32_t blocksX = 0, blocksY = 0;   // enough to cover the image
 };
-// The block size a fit uses on `image`: `blockSize` when it is 16, 32 or 64; for 0,
+// The block size a fit uses on `image`: `blockSize` when it is 8, 16, 32 or 64; for 0,
 // the paper's 32 pixels at 720 lines scaled by height / 720 (the paper's block count),
 // rounded to the nearest of 16, 32, 64 on a log scale: 16 below 510 lines, 64 from
-// 1019 lines on.
+// 1019 lines on (8 only when given).
 uint32_t bmfrBlockSizeFor(rhi::Extent2D image, uint32_t blockSize);
 // Offset k of the 16 (Sec. 6.1: "a static sequence of 16 random offsets"), in 1/64
 // of a block; offset 0 is (0, 0).

@@ -13,7 +13,8 @@
 //   2. scale T to [-1, 1], add N; colour divided by its block maximum
 //   3. Householder QR, R kept in shared memory (Q is never formed, Sec. 3.2)
 //   4. back substitution R alpha = r per channel, guarded diagonal
-//   5. output T alpha (noise-free T) times the colour scale
+//   5. output T alpha (noise-free T) times the colour scale; with nonNegative, negative
+//      values set to 0 and the rest scaled to keep the block's sum
 // Loops over rows and columns are unrolled so that every matrix index is a constant:
 // a dynamic index would put the matrix in memory.
 #extension GL_KHR_shader_subgroup_basic : require
@@ -46,6 +47,7 @@ layout(push_constant) uniform Params {
     float diagonalGuard;
     float zeroColumn;
     float dependentColumn;
+    uint nonNegative;
 } params;
 
 // The feature set is a specialization constant, not a push constant: fixed per pipeline
@@ -328,24 +330,58 @@ void solveBlock(uint rho) {
 }
 
 // 5. y = T alpha with the noise-free T (Sec. 3.2, Eq. 6), back to radiance units.
+vec3 fittedValue(ivec2 p, uvec2 local) {
+    BmfrGuideTexel g = fetchGuide(p, local);
+    vec3 y = vec3(0.0);
+    for (uint m = 0u; m < featureCount; ++m) {
+        uint code = featureCode(m);
+        float t = bmfrScaled(code, bmfrRawFeature(code, g), featureLo[m], featureHalfRange[m]);
+        y += t * vec3(alpha[m * 3u], alpha[m * 3u + 1u], alpha[m * 3u + 2u]);
+    }
+    vec3 out3 = clamp(y * vec3(colourScale[0], colourScale[1], colourScale[2]), vec3(-3.0e38), vec3(3.0e38));
+    [[unroll]] for (uint c = 0u; c < 3u; ++c) {
+        if (isnan(out3[c]) || isinf(out3[c])) out3[c] = 0.0;
+    }
+    return out3;
+}
+
+// The block's sum of y per channel, in total[kMaxFeatures + c] (a workgroup reduction:
+// every invocation calls it).
+void sumBlock(vec3 y[kRows]) {
+    float values[kColumns];
+    [[unroll]] for (uint c = 0u; c < kColumns; ++c) values[c] = 0.0;
+    [[unroll]] for (uint i = 0u; i < kRows; ++i)
+        [[unroll]] for (uint c = 0u; c < 3u; ++c) values[kMaxFeatures + c] += y[i][c];
+    reduceColumns(0u, values);
+}
+
+// A least-squares fit with the constant feature keeps the block's sum, but beside a
+// firefly it rings below 0 (an 8x8 block, docs/passes/bmfr.md). Clamping at 0 alone
+// would add energy; scaling the positive values by sum(y) / sum(max(y, 0)) keeps the
+// block's sum. A block with no negative value is unchanged (the ratio is exactly 1).
+void keepNonNegative(inout vec3 y[kRows]) {
+    sumBlock(y);
+    vec3 signedSum = vec3(total[kMaxFeatures], total[kMaxFeatures + 1u], total[kMaxFeatures + 2u]);
+    vec3 positive[kRows];
+    [[unroll]] for (uint i = 0u; i < kRows; ++i) positive[i] = max(y[i], vec3(0.0));
+    sumBlock(positive);
+    vec3 positiveSum = vec3(total[kMaxFeatures], total[kMaxFeatures + 1u], total[kMaxFeatures + 2u]);
+    [[unroll]] for (uint c = 0u; c < 3u; ++c) {
+        float ratio = positiveSum[c] > 0.0 ? clamp(signedSum[c] / positiveSum[c], 0.0, 1.0) : 0.0;
+        [[unroll]] for (uint i = 0u; i < kRows; ++i) y[i][c] = positive[i][c] * ratio;
+    }
+}
+
 void storeBlock(ivec2 origin) {
-    vec3 scale = vec3(colourScale[0], colourScale[1], colourScale[2]);
+    vec3 y[kRows];
     [[unroll]] for (uint i = 0u; i < kRows; ++i) {
-        uvec2 local = rowLocal(i);
-        ivec2 p = origin + ivec2(local);
-        if (!insideImage(p)) continue;
-        BmfrGuideTexel g = fetchGuide(p, local);
-        vec3 y = vec3(0.0);
-        for (uint m = 0u; m < featureCount; ++m) {
-            uint code = featureCode(m);
-            float t = bmfrScaled(code, bmfrRawFeature(code, g), featureLo[m], featureHalfRange[m]);
-            y += t * vec3(alpha[m * 3u], alpha[m * 3u + 1u], alpha[m * 3u + 2u]);
-        }
-        vec3 out3 = clamp(y * scale, vec3(-3.0e38), vec3(3.0e38));
-        [[unroll]] for (uint c = 0u; c < 3u; ++c) {
-            if (isnan(out3[c]) || isinf(out3[c])) out3[c] = 0.0;
-        }
-        imageStore(fitted, p, bmfrStorable(vec4(out3, texelFetch(illumination, p, 0).a)));
+        ivec2 p = origin + ivec2(rowLocal(i));
+        y[i] = insideImage(p) ? fittedValue(p, rowLocal(i)) : vec3(0.0);   // outside: adds nothing to the sums
+    }
+    if (params.nonNegative != 0u) keepNonNegative(y);
+    [[unroll]] for (uint i = 0u; i < kRows; ++i) {
+        ivec2 p = origin + ivec2(rowLocal(i));
+        if (insideImage(p)) imageStore(fitted, p, bmfrStorable(vec4(y[i], texelFetch(illumination, p, 0).a)));
     }
 }
 

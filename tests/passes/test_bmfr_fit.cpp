@@ -64,10 +64,13 @@ TEST_CASE("bmfr noise is uniform in [-eps, eps] with zero mean", "[bmfr]") {
 TEST_CASE("bmfr block size 0 keeps the paper's block count: 32 pixels at 720 lines, scaled and rounded", "[bmfr]") {
     using passes::bmfrBlockSizeFor;
     CHECK(bmfrBlockSizeFor({1280, 720}, 0) == 32);   // the paper's frame
-    CHECK(bmfrBlockSizeFor({128, 128}, 0) == 16);
-    CHECK(bmfrBlockSizeFor({16, 8}, 0) == 16);       // 8 only when given
+    CHECK(bmfrBlockSizeFor({128, 128}, 0) == 8);
+    CHECK(bmfrBlockSizeFor({16, 8}, 0) == 8);
+    CHECK(bmfrBlockSizeFor({256, 254}, 0) == 8);     // the boundaries: geometric means of 8, 16, 32, 64
+    CHECK(bmfrBlockSizeFor({256, 255}, 0) == 16);
+    CHECK(bmfrBlockSizeFor({256, 256}, 0) == 16);
     CHECK(bmfrBlockSizeFor({640, 360}, 0) == 16);
-    CHECK(bmfrBlockSizeFor({4096, 509}, 0) == 16);   // the boundaries: geometric means of 16, 32, 64
+    CHECK(bmfrBlockSizeFor({4096, 509}, 0) == 16);
     CHECK(bmfrBlockSizeFor({16, 510}, 0) == 32);
     CHECK(bmfrBlockSizeFor({16, 1018}, 0) == 32);
     CHECK(bmfrBlockSizeFor({16, 1019}, 0) == 64);
@@ -184,4 +187,44 @@ TEST_CASE("bmfr fit rejects bad settings and missing guides", "[bmfr]") {
     s = {};
     s.features = {passes::BmfrFeature::One, passes::BmfrFeature::NormalX};
     CHECK_NOTHROW(passes::addBmfrFitPass(t.ctx, "bmfr.fit2", illum, normalOnly, s));
+}
+
+// fit.nonNegative (the default): beside fireflies a block's fit rings below 0; the
+// node sets those values to 0 and scales the block's others to keep its sum.
+TEST_CASE("bmfr fit beside fireflies is non-negative and keeps each block's sum, as the CPU reference", "[bmfr]") {
+    test::ValidationScope scope;
+    Scene sc = realLookingScene(32, 24, 11);
+    for (uint32_t y = 0; y < sc.height(); ++y)
+        for (uint32_t x = 0; x < sc.width(); ++x)
+            if ((x * 7 + y * 13) % 29 == 0)
+                for (uint32_t c = 0; c < 3; ++c) sc.illumination.at(x, y, c) = 1e4f;
+    passes::BmfrFitSettings s;
+    s.blockSize = 8;
+    s.offsetBlocks = false;   // blocks at multiples of 8: the sums below are per block
+    passes::BmfrFitSettings plain = s;
+    plain.nonNegative = false;
+    const auto gpu = runFit(sc, s), gpuPlain = runFit(sc, plain);
+    const auto ref = reference::bmfrFit(sc.images(), s, 0);
+    const Diff d = diff(gpu, ref);
+    INFO("max |gpu - cpu| " << d.maxAbs << ", output rms " << d.scale);
+    REQUIRE(d.maxAbs <= 2e-3 * d.scale);
+    REQUIRE(diff(gpuPlain, reference::bmfrFit(sc.images(), plain, 0)).maxAbs <= 2e-3 * d.scale);
+    float plainMin = 0.0f, lo = 0.0f;
+    for (uint32_t by = 0; by < 3; ++by)
+        for (uint32_t bx = 0; bx < 4; ++bx)
+            for (uint32_t c = 0; c < 3; ++c) {
+                double sum = 0.0, plainSum = 0.0;
+                for (uint32_t y = by * 8; y < by * 8 + 8; ++y)
+                    for (uint32_t x = bx * 8; x < bx * 8 + 8; ++x) {
+                        sum += gpu.at(x, y, c);
+                        plainSum += gpuPlain.at(x, y, c);
+                        lo = std::min(lo, gpu.at(x, y, c));
+                        plainMin = std::min(plainMin, gpuPlain.at(x, y, c));
+                    }
+                INFO("block " << bx << ", " << by << " channel " << c << ": sum " << sum << ", plain " << plainSum);
+                CHECK(sum == Approx(plainSum).epsilon(1e-4));
+            }
+    CHECK(plainMin < -1.0f);   // the case exercises the ringing
+    CHECK(lo == 0.0f);
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }

@@ -53,9 +53,8 @@ bool bmfrNeedsMeshId(BmfrFeature f) { return f == BmfrFeature::MeshId; }
 uint32_t bmfrBlockSizeFor(rhi::Extent2D image, uint32_t blockSize) {
     if (blockSize != 0) return blockSize;
     const double scaled = 32.0 * double(image.height) / 720.0;
-    // Not 8, though a fit of 8-pixel blocks scores better on most built-in scenes at
-    // 128x128: beside fireflies it rings below 0 (docs/sweep.md).
-    if (scaled * scaled < 16.0 * 32.0) return 16;   // below the geometric mean of 16 and 32
+    if (scaled * scaled < 8.0 * 16.0) return 8;     // below the geometric mean of 8 and 16
+    if (scaled * scaled < 16.0 * 32.0) return 16;
     if (scaled * scaled < 32.0 * 64.0) return 32;
     return 64;
 }
@@ -130,9 +129,9 @@ struct FitVariant {
     }
 };
 
-// The block sizes a fit can meet: the given one, or all three when it follows the frame.
+// The block sizes a fit can meet: the given one, or all four when it follows the frame.
 std::vector<uint32_t> fitBlockSizes(uint32_t blockSize) {
-    return blockSize != 0 ? std::vector<uint32_t>{blockSize} : std::vector<uint32_t>{16, 32, 64};
+    return blockSize != 0 ? std::vector<uint32_t>{blockSize} : std::vector<uint32_t>{8, 16, 32, 64};
 }
 
 // fit.glsl reduces through subgroups and sizes its shared memory for subgroups of at

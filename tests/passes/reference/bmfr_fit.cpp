@@ -204,6 +204,22 @@ void forEachBlock(const BmfrImages& in, const passes::BmfrFitSettings& given, ui
         for (uint32_t bx = 0; bx < g.blocksX; ++bx) fn(gatherBlock(in, s, g, bx, by, uint32_t(frameIndex)));
 }
 
+// One channel of a block's prediction, in radiance units. nonNegative (fit.hpp): every
+// negative value becomes 0 and the rest are scaled so that the block's sum is kept.
+void storeChannel(FloatImage& out, const Block& b, size_t c, std::vector<double> y, bool nonNegative) {
+    for (double& v : y) v *= b.scale[c];
+    if (nonNegative) {
+        double sum = 0.0, positive = 0.0;
+        for (const double v : y) {
+            sum += v;
+            positive += std::max(v, 0.0);
+        }
+        const double ratio = positive > 0.0 ? std::clamp(sum / positive, 0.0, 1.0) : 0.0;
+        for (double& v : y) v = std::max(v, 0.0) * ratio;
+    }
+    for (size_t r = 0; r < y.size(); ++r) out.at(b.px[r], b.py[r], uint32_t(c)) = float(y[r]);
+}
+
 } // namespace
 
 float bmfrNoise(uint32_t x, uint32_t y, uint32_t frame, uint32_t column, float epsilon) {
@@ -222,12 +238,11 @@ FloatImage bmfrFit(const BmfrImages& in, const passes::BmfrFitSettings& s, uint6
         }
         for (size_t c = 0; c < 3; ++c) a[M + c] = b.z[c];
         const auto coef = solveHouseholder(std::move(a), M);
-        for (size_t r = 0; r < b.px.size(); ++r) {
-            for (size_t c = 0; c < 3; ++c) {
-                double y = 0.0;
-                for (size_t m = 0; m < M; ++m) y += b.t[m][r] * coef[m][c];   // noise-free T (Eq. 6)
-                out.at(b.px[r], b.py[r], uint32_t(c)) = float(y * b.scale[c]);
-            }
+        for (size_t c = 0; c < 3; ++c) {
+            std::vector<double> y(b.px.size(), 0.0);
+            for (size_t r = 0; r < y.size(); ++r)
+                for (size_t m = 0; m < M; ++m) y[r] += b.t[m][r] * coef[m][c];   // noise-free T (Eq. 6)
+            storeChannel(out, b, c, std::move(y), s.nonNegative);
         }
     });
     return out;
@@ -264,7 +279,7 @@ FloatImage bmfrProjection(const BmfrImages& in, const passes::BmfrFitSettings& s
                 for (size_t r = 0; r < W; ++r) d += e[r] * b.z[c][r];
                 for (size_t r = 0; r < W; ++r) y[r] += d * e[r];
             }
-            for (size_t r = 0; r < W; ++r) out.at(b.px[r], b.py[r], uint32_t(c)) = float(y[r] * b.scale[c]);
+            storeChannel(out, b, c, std::move(y), s.nonNegative);
         }
     });
     return out;

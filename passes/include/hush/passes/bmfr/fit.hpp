@@ -66,6 +66,11 @@ struct BmfrFitSettings {
     // Displace the block grid by one of 16 pre-generated offsets, chosen by the frame
     // index (Sec. 6.1); false: the grid starts at pixel (0, 0) every frame.
     bool offsetBlocks = true;
+    // Negative fitted values set to 0 and the block's other values scaled by
+    // sum(y) / sum(max(y, 0)) per channel, so the block keeps its sum: a fit beside a
+    // firefly rings below 0 (most in 8-pixel blocks), which no radiance is. A block
+    // with no negative value is unchanged. false: the paper's plain T alpha.
+    bool nonNegative = true;
     // Format of the fitted output: RGBA32Float (default) or RGBA16Float
     // (BmfrSettings::halfPrecision; clamped to +-65504). The block matrix buffer and
     // the QR stay fp32 either way.
@@ -88,6 +93,7 @@ template <class V> void describe(V&& v, BmfrFitSettings& s) {
     v.field("epsilon", s.epsilon, Range{0.0, kUnbounded});
     v.field("features", s.features, kBmfrFeatureNames, kBmfrMaxFeatures);
     v.field("offsetBlocks", s.offsetBlocks);
+    v.field("nonNegative", s.nonNegative);
     v.field("format", s.format, kStorageFormatNames);
 }
 
@@ -116,8 +122,8 @@ struct BmfrBlockGrid {
 };
 // The block size a fit uses on `image`: `blockSize` when it is 8, 16, 32 or 64; for 0,
 // the paper's 32 pixels at 720 lines scaled by height / 720 (the paper's block count),
-// rounded to the nearest of 16, 32, 64 on a log scale: 16 below 510 lines, 64 from
-// 1019 lines on (8 only when given).
+// rounded to the nearest of 8, 16, 32, 64 on a log scale: 8 below 255 lines, 16 below
+// 510, 64 from 1019 lines on.
 uint32_t bmfrBlockSizeFor(rhi::Extent2D image, uint32_t blockSize);
 // Offset k of the 16 (Sec. 6.1: "a static sequence of 16 random offsets"), in 1/64
 // of a block; offset 0 is (0, 0).

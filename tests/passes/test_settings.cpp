@@ -131,7 +131,7 @@ TEST_CASE("settings: the field counter sees a field that describe() leaves out",
         float b = 0;
     };
     CHECK(passes::fieldCount<Two>() == 2);
-    CHECK(passes::fieldCount<passes::BmfrFitSettings>() == 5);   // blockSize, epsilon, features, offsetBlocks, format
+    CHECK(passes::fieldCount<passes::BmfrFitSettings>() == 6);   // blockSize, epsilon, features, offsetBlocks, nonNegative, format
 }
 
 TEST_CASE("settings: every field of every built-in chain is set from a chain file", "[settings][chain-file]") {

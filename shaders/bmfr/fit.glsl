@@ -98,20 +98,21 @@ float subgroupCombine(uint op, float v) {
     return op == 0u ? subgroupAdd(v) : (op == 1u ? subgroupMin(v) : subgroupMax(v));
 }
 
-// total[c] = the workgroup's reduction of values[c], for every column. op: 0 sum,
-// 1 min, 2 max. Each subgroup reduces in registers, then invocation c combines column
-// c's subgroup results in subgroup order: a fixed order, so every run gives the same.
-void reduceColumns(uint op, float values[kColumns]) {
+// total[c] = the workgroup's reduction of values[c], for every column from `first` on.
+// op: 0 sum, 1 min, 2 max. Each subgroup reduces in registers, then invocation c
+// combines column c's subgroup results in subgroup order: a fixed order, so every run
+// gives the same.
+void reduceColumnsFrom(uint op, uint first, float values[kColumns]) {
     barrier();   // everyone has read the last totals
     [[unroll]] for (uint c = 0u; c < kColumns; ++c) {
-        if (!isColumnUsed(c)) continue;
+        if (c < first || !isColumnUsed(c)) continue;
         float v = subgroupCombine(op, values[c]);
         if (subgroupElect()) partial[c * kMaxSubgroups + gl_SubgroupID] = v;
     }
     barrier();
     uint tid = gl_LocalInvocationID.x;
     // An 8x8 block has 8 invocations for up to 20 columns: each combines every kThreads-th.
-    for (uint c = tid; c < kColumns; c += kThreads) {
+    for (uint c = first + tid; c < kColumns; c += kThreads) {
         if (!isColumnUsed(c)) continue;
         float v = partial[c * kMaxSubgroups];
         for (uint g = 1u; g < gl_NumSubgroups; ++g) v = combine(op, v, partial[c * kMaxSubgroups + g]);
@@ -119,6 +120,8 @@ void reduceColumns(uint op, float values[kColumns]) {
     }
     barrier();
 }
+
+void reduceColumns(uint op, float values[kColumns]) { reduceColumnsFrom(op, 0u, values); }
 
 ivec2 blockOrigin() {
     uint block = gl_WorkGroupID.x;
@@ -345,14 +348,14 @@ vec3 fittedValue(ivec2 p, uvec2 local) {
     return out3;
 }
 
-// The block's sum of y per channel, in total[kMaxFeatures + c] (a workgroup reduction:
-// every invocation calls it).
+// The block's sum of y per channel, in total[kMaxFeatures + c] (a workgroup reduction
+// of the three colour columns only: every invocation calls it).
 void sumBlock(vec3 y[kRows]) {
     float values[kColumns];
     [[unroll]] for (uint c = 0u; c < kColumns; ++c) values[c] = 0.0;
     [[unroll]] for (uint i = 0u; i < kRows; ++i)
         [[unroll]] for (uint c = 0u; c < 3u; ++c) values[kMaxFeatures + c] += y[i][c];
-    reduceColumns(0u, values);
+    reduceColumnsFrom(0u, kMaxFeatures, values);
 }
 
 // A least-squares fit with the constant feature keeps the block's sum, but beside a

@@ -1,7 +1,8 @@
 // The sweep's plot, drawn with cairo (SVG and PNG surfaces share the drawing): GPU ms
 // per frame on x, the sweep's quality metric on y (better is up), one dot per
 // configuration coloured by chain, the Pareto front joined and ringed, each point
-// labelled with its configuration's name, the noisy input as a dashed line.
+// labelled with its configuration's name where labels do not collide (plot_labels.hpp),
+// the chains' colours in a legend, the noisy input as a dashed line.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 
 #include <hush/core/error.hpp>
 
+#include "plot_labels.hpp"
 #include "sweep_result.hpp"
 
 namespace hush::cli {
@@ -73,6 +75,10 @@ void drawAxes(cairo_t* cr, const Axis& x, const Axis& y, const SweepMetric& metr
     text(cr, kLeft, 30, title, 15);
 }
 
+void drawLabels(cairo_t* cr, const std::vector<const SweepPoint*>& points, const std::vector<size_t>& front,
+                const Axis& x, const Axis& y, const SweepMetric& metric, const std::vector<PlotBox>& dots);
+void drawLegend(cairo_t* cr, const std::map<std::string, size_t>& chainIndex);
+
 void draw(cairo_t* cr, const SweepResult& result, const SweepSource& source) {
     const auto& metric = sweepMetric(result.metric);
     const auto points = result.pointsOf(source.key);
@@ -108,10 +114,13 @@ void draw(cairo_t* cr, const SweepResult& result, const SweepSource& source) {
     cairo_stroke(cr);
     std::map<std::string, size_t> chainIndex;
     for (const auto& c : result.configs) chainIndex.emplace(c.chain, chainIndex.size());
+    std::vector<PlotBox> dots;
     for (size_t i = 0; i < points.size(); ++i) {
         const auto* p = points[i];
         const double px = x.map(p->gpuMs), py = y.map(metric.of(p->quality));
         const bool onFront = std::find(front.begin(), front.end(), i) != front.end();
+        const double r = onFront ? 8.5 : 4.0;
+        dots.push_back({px - r, py - r, px + r, py + r});
         chainColour(cr, chainIndex[result.config(p->config).chain]);
         cairo_arc(cr, px, py, onFront ? 6.0 : 4.0, 0, 2 * M_PI);
         cairo_fill(cr);
@@ -120,8 +129,61 @@ void draw(cairo_t* cr, const SweepResult& result, const SweepSource& source) {
             cairo_arc(cr, px, py, 8.5, 0, 2 * M_PI);
             cairo_stroke(cr);
         }
+    }
+    drawLabels(cr, points, front, x, y, metric, dots);
+    drawLegend(cr, chainIndex);
+}
+
+// Every front label, and every other one that has a free place (plot_labels.hpp); a
+// footnote counts the others, which the report's table lists.
+void drawLabels(cairo_t* cr, const std::vector<const SweepPoint*>& points, const std::vector<size_t>& front,
+                const Axis& x, const Axis& y, const SweepMetric& metric, const std::vector<PlotBox>& dots) {
+    cairo_set_font_size(cr, 10);
+    cairo_font_extents_t font;
+    cairo_font_extents(cr, &font);
+    std::vector<PlotLabel> labels;
+    for (size_t i = 0; i < points.size(); ++i) {
+        cairo_text_extents_t e;
+        cairo_text_extents(cr, points[i]->config.c_str(), &e);
+        labels.push_back({x.map(points[i]->gpuMs), y.map(metric.of(points[i]->quality)), e.x_advance,
+                          font.ascent + font.descent, std::find(front.begin(), front.end(), i) != front.end()});
+    }
+    const PlotBox area{kLeft + 2, kTop + 2, kWidth - kRight - 2, kHeight - kBottom - 2};
+    const auto boxes = placeLabels(labels, dots, area);
+    size_t omitted = 0;
+    cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (!boxes[i]) {
+            ++omitted;
+            continue;
+        }
+        cairo_move_to(cr, boxes[i]->x0, boxes[i]->y0 + font.ascent);
+        cairo_show_text(cr, points[i]->config.c_str());
+    }
+    if (omitted)
+        text(cr, kWidth - kRight, kHeight - 3,
+             std::to_string(omitted) + " label" + (omitted > 1 ? "s" : "") + " left out to keep them apart; the report's table lists all",
+             9, 1.0);
+}
+
+// The chains' colours, in the title line's right end.
+void drawLegend(cairo_t* cr, const std::map<std::string, size_t>& chainIndex) {
+    std::vector<std::pair<size_t, std::string>> chains;
+    for (const auto& [name, index] : chainIndex) chains.emplace_back(index, name);
+    std::sort(chains.begin(), chains.end());
+    double right = kWidth - kRight;
+    cairo_set_font_size(cr, 11);
+    for (auto it = chains.rbegin(); it != chains.rend(); ++it) {
+        cairo_text_extents_t e;
+        cairo_text_extents(cr, it->second.c_str(), &e);
+        right -= e.x_advance;
         cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
-        text(cr, px + 9, py - 6, p->config, 10);
+        cairo_move_to(cr, right, 30);
+        cairo_show_text(cr, it->second.c_str());
+        chainColour(cr, it->first);
+        cairo_arc(cr, right - 8, 26, 4.0, 0, 2 * M_PI);
+        cairo_fill(cr);
+        right -= 24;
     }
 }
 

@@ -93,7 +93,7 @@ std::string sweepTable(const SweepResult& result);
 std::string sweepExposureTable(const SweepResult& result);
 
 // sweep_plot.cpp: <stem>.svg and <stem>.png, GPU ms against the metric, one point
-// per configuration, the front joined and highlighted, every point labelled.
+// per configuration, the front joined and highlighted, points labelled where labels stay apart.
 void writeSweepPlot(const SweepResult& result, const SweepSource& source, const std::string& svgPath,
                     const std::string& pngPath);
 

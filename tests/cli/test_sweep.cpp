@@ -2,6 +2,7 @@
 // and (run by tests/cli/sweep.sh on a sweep it made) the checks of a sweep's output.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include <hush/core/error.hpp>
 
+#include "plot_labels.hpp"
 #include "sweep_config.hpp"
 #include "sweep_result.hpp"
 
@@ -73,6 +75,47 @@ TEST_CASE("knobs expand into one chain file per combination of their values", "[
     CHECK_THROWS_WITH(parseKnob("svgf=1"), Catch::Contains("expected <chain>.<setting>"));
 }
 
+TEST_CASE("plot labels never cover each other or a point; the front's always show", "[sweep]") {
+    // Twelve configurations within a few pixels of each other (a knob that changes
+    // nothing measurable), two front points near them, one alone.
+    std::vector<PlotLabel> labels;
+    std::vector<PlotBox> dots;
+    auto add = [&](double x, double y, bool front) {
+        labels.push_back({x, y, 40.0, 12.0, front});
+        const double r = front ? 8.5 : 4.0;
+        dots.push_back({x - r, y - r, x + r, y + r});
+    };
+    for (int i = 0; i < 12; ++i) add(200.0 + (i % 4), 200.0 + (i / 4), false);
+    add(205.0, 235.0, true);
+    add(150.0, 260.0, true);
+    add(600.0, 100.0, true);
+    const PlotBox area{80, 50, 770, 460};
+    const auto boxes = placeLabels(labels, dots, area);
+    REQUIRE(boxes.size() == labels.size());
+    size_t shown = 0;
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        if (labels[i].required) REQUIRE(boxes[i].has_value());
+        if (!boxes[i]) continue;
+        ++shown;
+        CHECK(boxes[i]->inside(area));
+        // Beside its own point: the nearest edge within a label's size of it.
+        const double dx = std::max({boxes[i]->x0 - labels[i].pointX, labels[i].pointX - boxes[i]->x1, 0.0});
+        const double dy = std::max({boxes[i]->y0 - labels[i].pointY, labels[i].pointY - boxes[i]->y1, 0.0});
+        CHECK(dx <= 10.0);
+        CHECK(dy <= 10.0);
+        for (size_t j = 0; j < i; ++j)
+            if (boxes[j]) CHECK(boxes[i]->overlap(*boxes[j]) == 0.0);
+        for (const auto& dot : dots) CHECK(boxes[i]->overlap(dot) == 0.0);
+    }
+    // The cluster cannot hold twelve labels apart: some are left out, some shown.
+    CHECK(shown > 3);
+    CHECK(shown < labels.size());
+    // A label at the plot's right edge goes to the left of its point.
+    const auto edge = placeLabels({{765.0, 300.0, 40.0, 12.0, true}}, {}, area);
+    REQUIRE(edge[0].has_value());
+    CHECK(edge[0]->x1 < 765.0);
+}
+
 // Hidden: tests/cli/sweep.sh runs it on the folder it swept (HUSH_SWEEP_OUTPUT).
 TEST_CASE("a sweep's output: complete results, non-dominated fronts, plots and a report whose images exist",
           "[.sweep-output]") {
@@ -115,12 +158,20 @@ TEST_CASE("a sweep's output: complete results, non-dominated fronts, plots and a
     std::stringstream text;
     text << html.rdbuf();
     const std::string page = text.str();
-    const std::regex source("src=\"([^\"]+)\"");
+    const std::regex imageSource("src=\"([^\"]+)\"");
     size_t images = 0;
-    for (auto it = std::sregex_iterator(page.begin(), page.end(), source); it != std::sregex_iterator(); ++it, ++images)
+    for (auto it = std::sregex_iterator(page.begin(), page.end(), imageSource); it != std::sregex_iterator(); ++it, ++images)
         CHECK(std::filesystem::exists(folder / (*it)[1].str()));
     // Per source: its plot, noisy, reference and at least one front configuration.
     CHECK(images >= 4 * result.sources.size());
+    // Every configuration on any metric's front is shown in a crop.
+    const SweepReportFiles files;
+    for (const auto& source : result.sources) {
+        const auto points = result.pointsOf(source.key);
+        for (const auto& metric : sweepMetrics())
+            for (size_t i : paretoFront(points, metric))
+                CHECK(page.find("src=\"" + files.image(source, points[i]->config) + "\"") != std::string::npos);
+    }
 }
 
 TEST_CASE("budget mode picks the best quality within the budget on every source, and says why", "[sweep]") {

@@ -324,6 +324,7 @@ int runSweep(std::span<const std::string_view> args) {
     core::writeFileAtomically(out.file("sweep.json"), sweepJson(result));
     out.finish();
     std::fputs(sweepTable(result).c_str(), stdout);
+    for (const auto& s : result.sources) std::fputs(sweepTextPlot(result, s).c_str(), stdout);
     std::fputs(sweepExposureTable(result).c_str(), stdout);
     std::printf("\nwrote %s/report.html, sweep.json, sweep.csv and the plots\n", out.path().string().c_str());
     int code = kExitOk;

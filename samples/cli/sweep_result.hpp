@@ -97,6 +97,10 @@ std::string sweepExposureTable(const SweepResult& result);
 void writeSweepPlot(const SweepResult& result, const SweepSource& source, const std::string& svgPath,
                     const std::string& pngPath);
 
+// sweep_text_plot.cpp: the same plot in text (`columns` x `rows` cells), a letter per
+// configuration in the table's order, uppercase on the front, and its key.
+std::string sweepTextPlot(const SweepResult& result, const SweepSource& source, int columns = 64, int rows = 16);
+
 // sweep_html.cpp: the report page. `files` gives each image's path relative to it.
 struct SweepReportFiles {
     std::string plotPng(const SweepSource& s) const { return "plot-" + s.key + ".png"; }

@@ -116,6 +116,42 @@ TEST_CASE("plot labels never cover each other or a point; the front's always sho
     CHECK(edge[0]->x1 < 765.0);
 }
 
+TEST_CASE("the text plot puts better configurations higher and faster ones further left, the front in capitals",
+          "[sweep]") {
+    SweepResult r;
+    r.metric = "ssim";
+    SweepSource source{.key = "s", .description = "scene s"};
+    source.noisy.ssim = 0.5;
+    r.sources.push_back(source);
+    for (const char* name : {"a", "b", "c"}) r.configs.push_back({.chain = "eaw", .name = name, .label = name});
+    r.points = {point("a", 1.0, 0.9), point("b", 4.0, 0.7), point("c", 4.0, 0.95)};
+    const auto plot = sweepTextPlot(r, r.sources[0], 40, 11);
+    std::vector<std::string> lines;
+    std::istringstream in(plot);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    auto where = [&](char glyph) {
+        for (size_t y = 0; y < lines.size(); ++y)
+            if (lines[y].size() > 12 && lines[y].find(glyph, 12) != std::string::npos && lines[y].find('|') == 11)
+                return std::pair<size_t, size_t>{y, lines[y].find(glyph, 12)};
+        FAIL("no '" << glyph << "' in the plot:\n" << plot);
+        return std::pair<size_t, size_t>{0, 0};
+    };
+    const auto a = where('A'), b = where('b'), c = where('C');   // b is beaten by c
+    CHECK(c.first < a.first);    // higher SSIM, higher up
+    CHECK(a.first < b.first);
+    CHECK(a.second < c.second);  // faster, further left
+    CHECK(b.second == c.second);
+    CHECK(plot.find("  A a (front)") != std::string::npos);
+    CHECK(plot.find("  b b\n") != std::string::npos);
+    CHECK(plot.find("----- noisy input\n") != std::string::npos);
+    CHECK(plot.find("4 ms") != std::string::npos);
+    // RMSE: lower is better and still up.
+    r.metric = "rmse";
+    const auto rmse = sweepTextPlot(r, r.sources[0], 40, 11);
+    CHECK(rmse.find("RMSE (better is up)") != std::string::npos);
+    CHECK(rmse.find('C') < rmse.find('A'));
+}
+
 // Hidden: tests/cli/sweep.sh runs it on the folder it swept (HUSH_SWEEP_OUTPUT).
 TEST_CASE("a sweep's output: complete results, non-dominated fronts, plots and a report whose images exist",
           "[.sweep-output]") {

@@ -45,13 +45,14 @@ double renderSequence(const tracer::Renderer& renderer, const SequenceRequest& r
     for (uint32_t i = r.first; i < r.first + r.frames; ++i) totalCost += frameCost(i);
     ProgressLine progress("render");
     const auto start = std::chrono::steady_clock::now();
+    tracer::Frame frame;   // one for the sequence: its images are allocated once
     for (uint32_t i = r.first; i < r.first + r.frames; ++i) {
         tracer::RenderSettings frameSettings = settings;
         std::erase(frameSettings.channels, tracer::Channel::Reference);
         if (hasReference(i)) frameSettings.channels.push_back(tracer::Channel::Reference);
         const std::string detail = "frame " + std::to_string(i - r.first + 1) + "/" + std::to_string(r.frames);
         const double cost = frameCost(i);
-        const tracer::Frame frame = renderer.render(i, frameSettings, [&](uint64_t done, uint64_t total) {
+        renderer.renderInto(frame, i, frameSettings, [&](uint64_t done, uint64_t total) {
             progress.update((doneCost + cost * double(done) / double(total)) / totalCost, detail);
         });
         tracer::writeFrame(frame, tracer::framePath(r.outFolder, i));

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <hush/tracer/builtin_scenes.hpp>
 #include <hush/tracer/renderer.hpp>
 
 #include "tracer_test_scenes.hpp"
@@ -216,4 +217,51 @@ TEST_CASE("renderer: an anti-aliased reference integrates each pixel's area and 
     INFO("mean area " << sumA / a.size() << ", mean centre " << sumC / c.size() << ", largest difference " << largest);
     CHECK(std::fabs(sumA - sumC) < 0.05 * sumC);
     CHECK(largest > 0.1 * peak);
+}
+
+TEST_CASE("the renderer counts the rays it casts, by kind", "[tracer]") {
+    const Renderer renderer(makeBuiltinScene("cornell"));
+    RenderSettings s;
+    s.width = 16, s.height = 16;
+    s.channels = {Channel::Albedo};   // the G-buffer needs the primary rays only
+    renderer.render(0, s);
+    const RayCounts primaryOnly = renderer.raysCast();
+    CHECK(primaryOnly.closestHit == 256);
+    CHECK(primaryOnly.occlusion == 0);
+    s.channels = {Channel::Color};   // one bounce: per pixel at most 2 more closest hits and 2 shadow rays
+    renderer.render(0, s);
+    const RayCounts path = renderer.raysCast();
+    const uint64_t closest = path.closestHit - primaryOnly.closestHit, shadow = path.occlusion;
+    CHECK(closest > 256);
+    CHECK(closest <= 3 * 256);
+    CHECK(shadow > 0);
+    CHECK(shadow <= 2 * 256);
+    CHECK(renderer.raysTraced() == path.closestHit + path.occlusion);
+}
+
+TEST_CASE("rendering into a reused frame gives the same frame as a fresh one", "[tracer]") {
+    const Renderer renderer(makeBuiltinScene("room"));
+    RenderSettings s;
+    s.width = 24, s.height = 16;
+    s.channels = {Channel::Color, Channel::Albedo, Channel::Depth, Channel::Reference};
+    s.referenceSpp = 2;
+    Frame reused;
+    renderer.renderInto(reused, 3, s);   // values everywhere, some of which frame 5 must clear
+    s.channels = {Channel::Color, Channel::Albedo, Channel::MeshId};
+    s.width = 24;
+    renderer.renderInto(reused, 5, s);
+    const Frame fresh = renderer.render(5, s);
+    CHECK_FALSE(reused.has(Channel::Reference));   // not asked for any more
+    CHECK_FALSE(reused.has(Channel::Depth));
+    CHECK(reused.referenceSpp == 0);
+    CHECK(reused.index == 5);
+    for (Channel c : s.channels) {
+        INFO("channel " << int(c));
+        REQUIRE(reused.has(c));
+        CHECK(reused.get(c).pixels == fresh.get(c).pixels);
+    }
+    s.width = 20;   // another size: the images are replaced
+    renderer.renderInto(reused, 5, s);
+    CHECK(reused.get(Channel::Albedo).width == 20);
+    CHECK(reused.get(Channel::Albedo).pixels == renderer.render(5, s).get(Channel::Albedo).pixels);
 }

@@ -1,5 +1,5 @@
-// Renderer: one World per frame time, rows shared out to threads through an atomic
-// counter, every pixel's estimates written into the frame's channels.
+// Renderer: one World per frame time, rows shared out to threads (parallelRows),
+// every pixel's estimates written into the frame's channels.
 #include <hush/tracer/renderer.hpp>
 
 #include <algorithm>
@@ -7,13 +7,13 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
-#include <thread>
 
 #include <embree3/rtcore.h>
 
 #include <hush/core/error.hpp>
 
 #include "camera_model.hpp"
+#include "parallel_rows.hpp"
 #include "path_integrator.hpp"
 #include "world.hpp"
 
@@ -24,7 +24,7 @@ using namespace detail;
 struct Renderer::Impl {
     Scene scene;
     RTCDevice device = nullptr;
-    mutable std::atomic<uint64_t> rays{0};
+    mutable std::atomic<uint64_t> closestHit{0}, occlusion{0};
     ~Impl() {
         if (device) rtcReleaseDevice(device);
     }
@@ -43,7 +43,7 @@ Renderer::~Renderer() = default;
 
 const Scene& Renderer::scene() const { return impl_->scene; }
 float Renderer::frameTime(uint32_t frameIndex) const { return float(frameIndex) / impl_->scene.framesPerSecond; }
-uint64_t Renderer::raysTraced() const { return impl_->rays.load(); }
+RayCounts Renderer::raysCast() const { return {impl_->closestHit.load(), impl_->occlusion.load()}; }
 
 namespace {
 
@@ -75,13 +75,45 @@ public:
         for (uint32_t i = 0; i < image->channels; ++i) p[i] = v[int(i)];
     }
 
+    void clearRow(uint32_t y) const {
+        for (Image* image : images_)
+            if (image) std::fill_n(image->at(0, y), size_t(image->width) * image->channels, 0.0f);
+    }
+
 private:
     std::array<Image*, std::size(kAllChannels)> images_{};
 };
 
+// Gives `frame` exactly the channels asked for at the settings' size, keeping the
+// images that already fit: rendering a sequence into one Frame then allocates its
+// images once. (Fresh ones each frame cost 12 % of a 1-spp frame's CPU time at
+// 1280x720, zeroing and page-faulting them on one thread; docs/benchmarks.md.)
+void prepareFrame(Frame& frame, const RenderSettings& settings) {
+    frame.width = settings.width;
+    frame.height = settings.height;
+    frame.referenceSpp = 0;
+    const auto asked = [&](Channel c) {
+        return std::find(settings.channels.begin(), settings.channels.end(), c) != settings.channels.end();
+    };
+    std::erase_if(frame.channels, [&](const auto& entry) {
+        const Image& image = entry.second;
+        return !asked(entry.first) || image.width != settings.width || image.height != settings.height ||
+               image.channels != channelInfo(entry.first).components;
+    });
+    for (Channel c : settings.channels)
+        if (!frame.has(c)) frame.add(c);
+}
+
 } // namespace
 
 Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, const ProgressFn& progress) const {
+    Frame frame;
+    renderInto(frame, frameIndex, settings, progress);
+    return frame;
+}
+
+void Renderer::renderInto(Frame& frame, uint32_t frameIndex, const RenderSettings& settings,
+                          const ProgressFn& progress) const {
     checkSettings(settings);
     const Scene& scene = impl_->scene;
     const float time = frameTime(frameIndex), previousTime = frameTime(frameIndex ? frameIndex - 1 : 0);
@@ -93,15 +125,12 @@ Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, cons
     const CameraModel previous =
         makeCamera(path.at(previousTime), settings.width, settings.height, path.nearPlane, path.farPlane, previousJitter);
 
-    Frame frame;
-    frame.width = settings.width;
-    frame.height = settings.height;
+    prepareFrame(frame, settings);
     frame.index = frameIndex;
     frame.scene = scene.name;
     frame.metresPerUnit = scene.sceneScale;
     frame.camera = camera.info;
     frame.previousCamera = previous.info;
-    for (Channel c : settings.channels) frame.add(c);
     const ChannelTable table(frame);
     const auto wants = [&](Channel c) { return table.has(c); };
     const auto put = [&](Channel c, uint32_t x, uint32_t y, glm::vec3 v) { table.put(c, x, y, v); };
@@ -116,15 +145,14 @@ Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, cons
     for (size_t m = 0; m < scene.meshes.size(); ++m)
         nowToBefore[m] = scene.meshes[m].transformAt(previousTime) * glm::inverse(world.transform(uint32_t(m)));
 
-    // Rays are counted per row: primary, shadow and bounce rays of the estimators.
-    const uint64_t raysPerPath = 2ull * (options.bounces + 1);
     const uint64_t unitsPerRow = uint64_t(settings.width) * (1 + (reference ? frame.referenceSpp : 0));
     const uint64_t totalUnits = unitsPerRow * settings.height;
-    std::atomic<uint32_t> nextRow{0};
     std::atomic<uint64_t> doneUnits{0};
     std::mutex progressMutex;
 
     auto renderRow = [&](uint32_t y) {
+        const RayCounts castBefore = World::raysCastOnThisThread();
+        table.clearRow(y);   // a reused image holds the last frame's values
         for (uint32_t x = 0; x < settings.width; ++x) {
             const glm::vec2 pixel(float(x) + 0.5f + jitter.x, float(y) + 0.5f + jitter.y);
             const glm::vec3 dir = camera.rayDirection(pixel);
@@ -203,9 +231,9 @@ Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, cons
                 put(Channel::Reference, x, y, glm::vec3(sum / double(frame.referenceSpp)));
             }
         }
-        const uint64_t paths = uint64_t(settings.width) * ((path1 ? 1 : 0) + (mara ? 3 : 0) +
-                                                           (reference ? frame.referenceSpp : 0));
-        impl_->rays += uint64_t(settings.width) + paths * raysPerPath;
+        const RayCounts castAfter = World::raysCastOnThisThread();
+        impl_->closestHit += castAfter.closestHit - castBefore.closestHit;
+        impl_->occlusion += castAfter.occlusion - castBefore.occlusion;
         const uint64_t done = doneUnits += unitsPerRow;
         if (progress) {
             std::lock_guard lock(progressMutex);
@@ -213,23 +241,7 @@ Frame Renderer::render(uint32_t frameIndex, const RenderSettings& settings, cons
         }
     };
 
-    const uint32_t threads = settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::thread> pool;
-    std::exception_ptr failure;
-    std::mutex failureMutex;
-    for (uint32_t t = 0; t < threads; ++t)
-        pool.emplace_back([&] {
-            try {
-                for (uint32_t y = nextRow++; y < settings.height; y = nextRow++) renderRow(y);
-            } catch (...) {
-                std::lock_guard lock(failureMutex);
-                if (!failure) failure = std::current_exception();
-                nextRow = settings.height;   // stop the others
-            }
-        });
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
-    return frame;
+    parallelRows(settings.height, settings.threads, renderRow);
 }
 
 } // namespace hush::tracer

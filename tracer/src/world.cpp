@@ -105,6 +105,12 @@ World::World(RTCDevice device, const Scene& scene, float time) : scene_(scene), 
     }
 }
 
+namespace {
+thread_local RayCounts tlsRaysCast;
+} // namespace
+
+RayCounts World::raysCastOnThisThread() { return tlsRaysCast; }
+
 World::~World() {
     if (rtc_) rtcReleaseScene(rtc_);
 }
@@ -124,6 +130,7 @@ Hit World::intersect(glm::vec3 origin, glm::vec3 direction, float tMax) const {
     rh.ray.mask = ~0u;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(rtc_, &context, &rh);
+    ++tlsRaysCast.closestHit;
     Hit hit;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.valid = true;
@@ -174,6 +181,7 @@ bool World::occluded(glm::vec3 origin, glm::vec3 direction, float tMax) const {
     ray.tfar = tMax;
     ray.mask = ~0u;
     rtcOccluded1(rtc_, &context, &ray);
+    ++tlsRaysCast.occlusion;
     return ray.tfar < 0.0f;
 }
 

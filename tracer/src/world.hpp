@@ -7,6 +7,7 @@
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
+#include <hush/tracer/renderer.hpp>
 #include <hush/tracer/scene.hpp>
 
 namespace hush::tracer::detail {
@@ -50,6 +51,11 @@ public:
     glm::vec3 sunRadiance(glm::vec3 direction) const;
     float sunPdf(glm::vec3 direction) const;
 
+    // Queries this thread has made through any World so far (a thread-local count,
+    // so that counting costs no shared cache line per ray).
+    static RayCounts raysCastOnThisThread();
+    // The BVH itself, for the ray-casting probe (ray_cast_probe.cpp).
+    RTCScene embreeScene() const { return rtc_; }
     const glm::mat4& transform(uint32_t mesh) const { return transforms_[mesh]; }
     float sceneScale() const { return scale_; }
 

@@ -32,6 +32,12 @@ struct RenderSettings {
     uint32_t threads = 0;             // 0: every core
 };
 
+struct RayCounts {
+    uint64_t closestHit = 0;   // rtcIntersect1: primary and bounce rays
+    uint64_t occlusion = 0;    // rtcOccluded1: shadow rays
+    uint64_t total() const { return closestHit + occlusion; }
+};
+
 // Called from the rendering threads, serialised: work units done out of total.
 using ProgressFn = std::function<void(uint64_t done, uint64_t total)>;
 
@@ -43,11 +49,18 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     Frame render(uint32_t frameIndex, const RenderSettings& settings, const ProgressFn& progress = {}) const;
+    // The same into `frame`, reusing its images where their size and channel fit (the
+    // others are replaced, channels not asked for removed): a sequence rendered into
+    // one Frame allocates its images once.
+    void renderInto(Frame& frame, uint32_t frameIndex, const RenderSettings& settings,
+                    const ProgressFn& progress = {}) const;
     const Scene& scene() const;
     float frameTime(uint32_t frameIndex) const;
 
-    // Rays traced so far by this renderer (primary, bounce and shadow rays).
-    uint64_t raysTraced() const;
+    // Rays cast through Embree so far by this renderer, counted as they are cast:
+    // closest-hit queries (primary and bounce rays) and occlusion (shadow) queries.
+    RayCounts raysCast() const;
+    uint64_t raysTraced() const { return raysCast().total(); }
 
 private:
     struct Impl;

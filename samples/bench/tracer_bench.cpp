@@ -103,7 +103,7 @@ Row measure(const tracer::Renderer& renderer, const std::string& name, uint32_t 
     {
         row.embree = tracer::probeRayCasting(renderer.scene(), {.frameIndex = 0, .width = w, .height = h,
                                                                 .repeats = options.probeRepeats});
-        row.embreeSeconds = row.embree.secondsFor(primary, closest - primary, shadow);
+        row.embreeSeconds = row.embree.secondsFor(primary, closest > primary ? closest - primary : 0, shadow);
     }
     return row;
 }

@@ -83,15 +83,10 @@ void draw(cairo_t* cr, const SweepResult& result, const SweepSource& source) {
     const auto& metric = sweepMetric(result.metric);
     const auto points = result.pointsOf(source.key);
     const double noisy = metric.of(source.noisy);
-    double xHi = 0, yLo = noisy, yHi = noisy;
-    for (const auto* p : points) {
-        xHi = std::max(xHi, p->gpuMs);
-        yLo = std::min(yLo, metric.of(p->quality));
-        yHi = std::max(yHi, metric.of(p->quality));
-    }
-    const Axis x{0.0, xHi > 0.0 ? 1.1 * xHi : 1.0, kLeft, kWidth - kRight};   // time from 0
+    const SweepExtent extent = sweepExtent(points, metric, noisy);
+    const Axis x{0.0, extent.msHi > 0.0 ? 1.1 * extent.msHi : 1.0, kLeft, kWidth - kRight};   // time from 0
     // Better is up: lower-is-better metrics run downwards.
-    Axis y = padded(yLo, yHi, kHeight - kBottom, kTop);
+    Axis y = padded(extent.lo, extent.hi, kHeight - kBottom, kTop);
     if (!metric.higherIsBetter) std::swap(y.pixelLo, y.pixelHi);
     drawAxes(cr, x, y, metric, "hush sweep: " + source.description);
 

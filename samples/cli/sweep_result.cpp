@@ -28,6 +28,16 @@ const SweepMetric& sweepMetric(const std::string& key) {
     throw Error(ErrorKind::InvalidArgument, "unknown quality metric '" + key + "' (known: " + keys + ")");
 }
 
+SweepExtent sweepExtent(const std::vector<const SweepPoint*>& points, const SweepMetric& metric, double noisy) {
+    SweepExtent e{0.0, noisy, noisy};
+    for (const auto* p : points) {
+        e.msHi = std::max(e.msHi, p->gpuMs);
+        e.lo = std::min(e.lo, metric.of(p->quality));
+        e.hi = std::max(e.hi, metric.of(p->quality));
+    }
+    return e;
+}
+
 std::vector<size_t> paretoFront(const std::vector<const SweepPoint*>& points, const SweepMetric& metric) {
     // Quality as "higher is better" so one comparison serves every metric.
     auto quality = [&](size_t i) { return metric.higherIsBetter ? metric.of(points[i]->quality) : -metric.of(points[i]->quality); };

@@ -65,6 +65,14 @@ const SweepMetric& sweepMetric(const std::string& key);
 // strictly. Sorted by time.
 std::vector<size_t> paretoFront(const std::vector<const SweepPoint*>& points, const SweepMetric& metric);
 
+// What a plot of one source spans: GPU ms from 0 to the slowest configuration's, and
+// `metric` over the configurations and the noisy input's value. Both plots use it.
+struct SweepExtent {
+    double msHi = 0.0;
+    double lo = 0.0, hi = 0.0;
+};
+SweepExtent sweepExtent(const std::vector<const SweepPoint*>& points, const SweepMetric& metric, double noisy);
+
 struct SweepResult {
     std::string metric = "ssim";      // the plots' and the table's quality axis
     std::vector<SweepSource> sources;

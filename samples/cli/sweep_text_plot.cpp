@@ -24,13 +24,8 @@ std::string sweepTextPlot(const SweepResult& r, const SweepSource& s, int column
     const auto points = r.pointsOf(s.key);
     const auto front = paretoFront(points, metric);
     const double noisy = metric.of(s.noisy);
-    double xHi = 0, yLo = noisy, yHi = noisy;
-    for (const auto* p : points) {
-        xHi = std::max(xHi, p->gpuMs);
-        yLo = std::min(yLo, metric.of(p->quality));
-        yHi = std::max(yHi, metric.of(p->quality));
-    }
-    if (!(xHi > 0)) xHi = 1;
+    const SweepExtent extent = sweepExtent(points, metric, noisy);
+    double xHi = extent.msHi > 0 ? extent.msHi : 1.0, yLo = extent.lo, yHi = extent.hi;
     if (!(yHi > yLo)) yLo -= 0.5, yHi += 0.5;
     // Better is up: the top row is the best value.
     auto rowOf = [&](double v) {

@@ -101,11 +101,12 @@ void createBindGroups(const rhi::Device& device, const GraphModel& model,
                       const std::vector<std::vector<BindGroupDecl>>& declared, CompiledGraph& c) {
     std::vector<rhi::TextureBarrier> setup;
     GroupContext g{device, model, c, setup};
-    c.bindGroups.assign(model.passes.size(), {});
-    c.bindGroupSets.assign(model.passes.size(), {});
+    c.bindGroups.clear();
+    c.bindGroupRanges.assign(model.passes.size(), {});
     for (uint32_t p : c.order) {
         const auto& pass = model.passes[p];
         if (!declared[p].empty()) requireEveryPortBound(pass, declared[p]);
+        c.bindGroupRanges[p] = {.first = uint32_t(c.bindGroups.size()), .count = uint32_t(declared[p].size())};
         for (const auto& decl : declared[p]) {
             const auto layout = decl.pipeline.getBindGroupLayout(decl.set);
             std::array<rhi::BindGroup, 2> groups;
@@ -119,8 +120,7 @@ void createBindGroups(const rhi::Device& device, const GraphModel& model,
                     throw Error(e.kind(), "pass '" + pass.name + "': " + e.what());
                 }
             }
-            c.bindGroups[p].push_back(groups);
-            c.bindGroupSets[p].push_back(decl.set);
+            c.bindGroups.push_back({.groups = groups, .set = decl.set});
         }
     }
     if (setup.empty()) return;

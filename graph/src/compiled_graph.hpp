@@ -23,12 +23,33 @@ struct RenderGraph::PassRuntime {
     std::vector<BindGroupDecl> bindGroups;
 };
 
-// The RHI barriers recorded before one pass, for one parity.
-struct RecordedBarriers {
+// One bind group a live pass declared, for both parities, and the set it binds at.
+struct PassBindGroup {
+    std::array<rhi::BindGroup, 2> groups;
+    uint32_t set = 0;
+};
+
+// Where one pass's bind groups lie in CompiledGraph::bindGroups.
+struct BindGroupRange {
+    uint32_t first = 0;
+    uint32_t count = 0;
+};
+
+// Where one step's barriers lie in its parity's lists: [first, first + count) of each.
+struct BarrierRange {
+    uint32_t firstTexture = 0, textureCount = 0;
+    uint32_t firstBuffer = 0, bufferCount = 0;
+    uint32_t firstMemory = 0, memoryCount = 0;
+    bool empty() const { return textureCount == 0 && bufferCount == 0 && memoryCount == 0; }
+};
+
+// Every step's RHI barriers for one parity, back to back in recording order; the
+// steps are the passes by position in the order, then the frame end.
+struct BarrierLists {
     std::vector<rhi::TextureBarrier> textures;
     std::vector<rhi::BufferBarrier> buffers;
     std::vector<rhi::MemoryBarrier> memory;
-    bool empty() const { return textures.empty() && buffers.empty() && memory.empty(); }
+    std::vector<BarrierRange> steps;
 };
 
 struct CompiledGraph : RealizedResources {
@@ -41,12 +62,14 @@ struct CompiledGraph : RealizedResources {
     // kind and format, made only when needed.
     std::vector<rhi::Texture> placeholders;
 
-    // Bind groups by pass index, declaration index and parity.
-    std::vector<std::vector<std::array<rhi::BindGroup, 2>>> bindGroups;
-    std::vector<std::vector<uint32_t>> bindGroupSets;
-    // Barriers by position in the order and parity; frame end by parity.
-    std::vector<std::array<RecordedBarriers, 2>> passBarriers;
-    std::array<RecordedBarriers, 2> frameEndBarriers;
+    // What a frame reads while it records lies in a few flat arrays, in recording
+    // order: after lavapipe's shader threads have run a 1280x720 frame on the same
+    // cores, little of it is still cached, and with a vector per pass every pass cost
+    // several cache misses (hush-bench-graph, docs/benchmarks.md "Render graph").
+    // Bind groups: pass p's declaration d is bindGroups[bindGroupRanges[p].first + d].
+    std::vector<PassBindGroup> bindGroups;
+    std::vector<BindGroupRange> bindGroupRanges;   // by pass index
+    std::array<BarrierLists, 2> barrierLists;      // by parity
 };
 
 // Makes every live pass's bind groups for both parities: each shader binding is bound

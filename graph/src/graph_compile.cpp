@@ -11,9 +11,12 @@ namespace hush::graph {
 
 namespace {
 
-// Planned barriers (on logical resources) as RHI lists for one parity.
-void recordBarriers(const GraphModel& m, const CompiledGraph& c, const std::vector<PlannedBarrier>& planned,
-                    RecordedBarriers& out, uint32_t parity) {
+// One step's planned barriers (on logical resources) appended to its parity's RHI lists.
+void appendBarriers(const GraphModel& m, const CompiledGraph& c, const std::vector<PlannedBarrier>& planned,
+                    BarrierLists& out, uint32_t parity) {
+    BarrierRange range{.firstTexture = uint32_t(out.textures.size()),
+                       .firstBuffer = uint32_t(out.buffers.size()),
+                       .firstMemory = uint32_t(out.memory.size())};
     for (const auto& b : planned) {
         const auto& res = m.resources[b.resource];
         if (b.aliased) out.memory.push_back({b.before, b.after});
@@ -22,13 +25,19 @@ void recordBarriers(const GraphModel& m, const CompiledGraph& c, const std::vect
         else
             out.buffers.push_back({c.buffers[b.resource], b.before, b.after});
     }
+    range.textureCount = uint32_t(out.textures.size()) - range.firstTexture;
+    range.bufferCount = uint32_t(out.buffers.size()) - range.firstBuffer;
+    range.memoryCount = uint32_t(out.memory.size()) - range.firstMemory;
+    out.steps.push_back(range);
 }
 
 void recordBarrierLists(const GraphModel& m, CompiledGraph& c) {
-    c.passBarriers.resize(c.order.size());
     for (uint32_t parity = 0; parity < 2; ++parity) {
-        for (size_t i = 0; i < c.order.size(); ++i) recordBarriers(m, c, c.barriers.beforePass[i], c.passBarriers[i][parity], parity);
-        recordBarriers(m, c, c.barriers.frameEnd, c.frameEndBarriers[parity], parity);
+        auto& lists = c.barrierLists[parity];
+        lists = {};
+        lists.steps.reserve(c.order.size() + 1);
+        for (size_t i = 0; i < c.order.size(); ++i) appendBarriers(m, c, c.barriers.beforePass[i], lists, parity);
+        appendBarriers(m, c, c.barriers.frameEnd, lists, parity);
     }
 }
 

@@ -4,6 +4,7 @@
 // RenderGraph::record does the same into a caller's command buffer, which the caller
 // submits (an engine's frame).
 #include <chrono>
+#include <span>
 
 #include <hush/graph/render_graph.hpp>
 #include <hush/core/error.hpp>
@@ -15,8 +16,12 @@ namespace hush::graph {
 
 namespace {
 
-void recordBarriers(rhi::CommandEncoder& encoder, const RecordedBarriers& b) {
-    if (!b.empty()) encoder.barrier(b.textures, b.buffers, b.memory);
+void recordBarriers(rhi::CommandEncoder& encoder, const BarrierLists& lists, size_t step) {
+    const auto& r = lists.steps[step];
+    if (r.empty()) return;
+    encoder.barrier(std::span(lists.textures).subspan(r.firstTexture, r.textureCount),
+                    std::span(lists.buffers).subspan(r.firstBuffer, r.bufferCount),
+                    std::span(lists.memory).subspan(r.firstMemory, r.memoryCount));
 }
 
 } // namespace
@@ -44,16 +49,17 @@ void RenderGraph::recordFrame(rhi::CommandEncoder& enc, FrameSlot& slot) {
     const bool timed = bool(slot.queries);
     const uint32_t parity = uint32_t((frame_ - compiledAtFrame_) % 2);
     historyValid_ = framesSinceHistoryReset_ > 0;
+    const auto& barriers = c.barrierLists[parity];
     if (timed) enc.writeTimestamp(slot.queries, 0);
     for (size_t i = 0; i < c.order.size(); ++i) {
         const uint32_t p = c.order[i];
-        recordBarriers(enc, c.passBarriers[i][parity]);
+        recordBarriers(enc, barriers, i);
         if (timed) enc.writeTimestamp(slot.queries, uint32_t(1 + 2 * i));
         PassContext ctx(c, enc, parity, historyValid_, frame_, framesSinceHistoryReset_);
         passes_[p].execute(ctx);
         if (timed) enc.writeTimestamp(slot.queries, uint32_t(2 + 2 * i));
     }
-    recordBarriers(enc, c.frameEndBarriers[parity]);
+    recordBarriers(enc, barriers, c.order.size());
     if (timed) enc.writeTimestamp(slot.queries, uint32_t(1 + 2 * c.order.size()));
     slot.cpuRecordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     slot.frame = frame_;
@@ -134,10 +140,18 @@ const rhi::Buffer& PassContext::buffer(BufferHandle handle) const {
     return graph_.buffers[handle.index];
 }
 
-const rhi::BindGroup& PassContext::bindGroup(BindGroupHandle handle) const {
-    if (handle.pass >= graph_.bindGroups.size() || handle.index >= graph_.bindGroups[handle.pass].size())
+namespace {
+
+const PassBindGroup& boundGroup(const CompiledGraph& graph, BindGroupHandle handle) {
+    if (handle.pass >= graph.bindGroupRanges.size() || handle.index >= graph.bindGroupRanges[handle.pass].count)
         throw Error(ErrorKind::InvalidArgument, "PassContext::bindGroup: the handle was not declared by a live pass");
-    return graph_.bindGroups[handle.pass][handle.index][parity_];
+    return graph.bindGroups[graph.bindGroupRanges[handle.pass].first + handle.index];
+}
+
+} // namespace
+
+const rhi::BindGroup& PassContext::bindGroup(BindGroupHandle handle) const {
+    return boundGroup(graph_, handle).groups[parity_];
 }
 
 rhi::Extent2D PassContext::outputSize() const { return graph_.outputSize; }
@@ -146,7 +160,8 @@ void PassContext::dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle
                            uint32_t layers, const rhi::PushConstants* params) {
     auto pass = encoder_.beginComputePass();
     pass.setPipeline(pipeline);
-    pass.setBindGroup(graph_.bindGroupSets[group.pass][group.index], bindGroup(group));
+    const auto& bound = boundGroup(graph_, group);
+    pass.setBindGroup(bound.set, bound.groups[parity_]);
     if (params) pass.setPushConstants(*params);
     pass.dispatchThreads(threads.width, threads.height, layers);
     pass.end();

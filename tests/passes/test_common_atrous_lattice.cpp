@@ -36,7 +36,7 @@ std::vector<int> axisCover(uint32_t extent, uint32_t threads, uint32_t step, uin
 } // namespace
 
 TEST_CASE("a-trous lattice: every pixel is filtered exactly once", "[atrous-lattice]") {
-    for (uint32_t block : {1u, 2u, 4u})   // 4: svgf.atrous's rows
+    for (uint32_t block : {1u, 2u, 3u, 4u, 5u})   // 4: svgf.atrous's rows, eaw.atrous's blocks
         for (uint32_t extent : {1u, 2u, 3u, 5u, 7u, 8u, 17u, 64u, 131u, 257u})
             for (uint32_t step : {1u, 2u, 4u, 8u, 16u, 64u, 256u, 65536u}) {
                 const Extent2D threads = hush::passes::atrousThreads({extent, 3}, step, block);

@@ -7,9 +7,9 @@
 namespace hush::passes {
 
 namespace {
-// Pixels per axis per invocation: shaders/eaw/atrous.comp's HUSH_ATROUS_BLOCK (the
-// lattice's default, 2).
-constexpr uint32_t kLatticeBlock = 2;
+// Pixels per axis per invocation: shaders/eaw/atrous.comp's HUSH_ATROUS_BLOCK
+// (docs/passes/atrous-lattice.md: 4 measured fastest with 5; 2, 3, 6 and 8 slower).
+constexpr uint32_t kLatticeBlock = 4;
 
 // sigma^2, floored so that the shader's division is never 0/0 (see the header).
 float guardedSquare(float sigma) {

@@ -1,9 +1,9 @@
 #pragma once
 // How a 5x5 a-trous level is dispatched on the a-trous lattice (shaders/common/
-// atrous_lattice.glsl): one invocation per 2x2 block of pixels spaced `step` apart,
+// atrous_lattice.glsl): one invocation per block of pixels spaced `step` apart,
 // whose taps overlap, so that each texel is read fewer times.
 //
-// Used by eaw.atrous (2x2 blocks) and svgf.atrous (rows of 4 pixels along x: the
+// Used by eaw.atrous (4x4 blocks) and svgf.atrous (rows of 4 pixels along x: the
 // x extent only, with block 4): docs/passes/atrous-lattice.md.
 #include <cstdint>
 
@@ -12,8 +12,8 @@
 namespace hush::passes {
 
 // The invocations a level at `step` dispatches over `size` pixels: per axis, `step`
-// invocations for every cell of 2 * step pixels (the last cell rounded up).
-// `block`: the shader's HUSH_ATROUS_BLOCK (1 or 2).
+// invocations for every cell of block * step pixels (the last cell rounded up).
+// `block`: the shader's HUSH_ATROUS_BLOCK (1 .. 8).
 rhi::Extent2D atrousThreads(rhi::Extent2D size, uint32_t step, uint32_t block);
 
 } // namespace hush::passes

@@ -2,9 +2,10 @@
 // Eq. 1): zero padding, bias, leaky ReLU (alpha 0.1) or linear. The input is the
 // concatenation of input_a's channels and input_b's (a skip connection, or the RCNN
 // block's hidden state), read in place: no copy makes the concatenation. Each
-// invocation computes kBlocksPerInvocation output blocks (16 channels) of kPixels
-// horizontally adjacent pixels: every input texel it loads feeds 16 x 4 multiply-adds
-// and every weight matrix kPixels x 16. Arithmetic is fp32.
+// invocation computes blocksPerInvocation output blocks (4 channels each; 4 blocks,
+// fewer for a layer with fewer) of kPixels horizontally adjacent pixels: every input
+// texel it loads feeds 4 x blocksPerInvocation multiply-adds and every weight matrix
+// kPixels x 16. Arithmetic is fp32.
 // Included by conv.comp (rgba16f storage) and conv_rgba32f.comp with HUSH_TENSOR_FORMAT.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -33,7 +34,10 @@ layout(push_constant) uniform Params {
     uint leaky;       // 1: leaky ReLU, 0: linear (the output layer)
 } params;
 
-const uint kBlocksPerInvocation = 4u;
+// Output blocks per invocation: 4, or the layer's block count where it has fewer
+// (rdae/conv.cpp: blocksPerInvocation()), so that a 3-channel output layer does not
+// compute three blocks of zero weights (docs/passes/rdae.md, "Speed").
+layout(constant_id = 0) const uint blocksPerInvocation = 4u;
 const uint kPixels = 8u;
 const float kLargest = 65504.0;
 
@@ -49,26 +53,30 @@ vec4 loadInput(ivec2 q, uint block) {
 }
 
 // Bias plus the 3x3 convolution of kPixels pixels from p0, for the group of output
-// blocks from `first` (weights and biases are padded to whole groups).
-void accumulate(ivec2 p0, uint first, uint stride, uint inBlocks, inout vec4 acc[kPixels][kBlocksPerInvocation]) {
-    for (uint o = 0u; o < kBlocksPerInvocation; ++o) {
+// blocks from `first` (weights and biases are padded to whole groups). Per input block
+// and kernel row, the row's kPixels + 2 texels are loaded once and shared by the three
+// taps of every pixel (30 loads per block instead of 72: on lavapipe each is a per-lane
+// gather).
+void accumulate(ivec2 p0, uint first, uint stride, uint inBlocks, inout vec4 acc[kPixels][blocksPerInvocation]) {
+    for (uint o = 0u; o < blocksPerInvocation; ++o) {
         vec4 b = bias.values[first + o];
         for (uint k = 0u; k < kPixels; ++k) {
             acc[k][o] = b;
         }
     }
-    for (uint tap = 0u; tap < 9u; ++tap) {
-        ivec2 q = p0 + ivec2(int(tap % 3u) - 1, int(tap / 3u) - 1);
-        for (uint block = 0u; block < inBlocks; ++block) {
-            vec4 v[kPixels];
-            for (uint k = 0u; k < kPixels; ++k) {
-                v[k] = loadInput(q + ivec2(int(k), 0), block);
+    for (uint block = 0u; block < inBlocks; ++block) {
+        for (uint dy = 0u; dy < 3u; ++dy) {
+            vec4 row[kPixels + 2u];
+            for (uint j = 0u; j < kPixels + 2u; ++j) {
+                row[j] = loadInput(p0 + ivec2(int(j) - 1, int(dy) - 1), block);
             }
-            uint w = first * stride + block * 9u + tap;
-            for (uint o = 0u; o < kBlocksPerInvocation; ++o) {
-                mat4 m = weights.values[w + o * stride];
-                for (uint k = 0u; k < kPixels; ++k) {
-                    acc[k][o] += m * v[k];
+            for (uint dx = 0u; dx < 3u; ++dx) {
+                uint w = first * stride + block * 9u + 3u * dy + dx;
+                for (uint o = 0u; o < blocksPerInvocation; ++o) {
+                    mat4 m = weights.values[w + o * stride];
+                    for (uint k = 0u; k < kPixels; ++k) {
+                        acc[k][o] += m * row[k + dx];
+                    }
                 }
             }
         }
@@ -85,11 +93,11 @@ void main() {
     }
     // The workgroup's z is its group of output blocks. The weights and biases are
     // padded to whole groups, so a fixed, unrolled loop reads them all.
-    uint first = gl_WorkGroupID.z * kBlocksPerInvocation;
+    uint first = gl_WorkGroupID.z * blocksPerInvocation;
     uint stride = (params.blocksA + params.blocksB) * 9u;
     uint inBlocks = params.blocksA + (params.hasB != 0u ? params.blocksB : 0u);
-    vec4 acc[kPixels][kBlocksPerInvocation];
-    for (uint o = 0u; o < kBlocksPerInvocation; ++o) {
+    vec4 acc[kPixels][blocksPerInvocation];
+    for (uint o = 0u; o < blocksPerInvocation; ++o) {
         for (uint k = 0u; k < kPixels; ++k) {
             acc[k][o] = vec4(0.0);
         }
@@ -100,10 +108,10 @@ void main() {
     if (first < params.outBlocks) {
         accumulate(p0, first, stride, inBlocks, acc);
     }
-    uint count = min(kBlocksPerInvocation, params.outTileCount - first);
+    uint count = min(blocksPerInvocation, params.outTileCount - first);
     for (uint k = 0u; k < kPixels; ++k) {
         ivec2 p = p0 + ivec2(int(k), 0);
-        for (uint o = 0u; o < kBlocksPerInvocation; ++o) {
+        for (uint o = 0u; o < blocksPerInvocation; ++o) {
             if (o < count && p.x < params.size.x) {
                 vec4 r = params.leaky != 0u ? max(acc[k][o], 0.1 * acc[k][o]) : acc[k][o];
                 r = clamp(r, vec4(-kLargest), vec4(kLargest));   // fp16 storage must not turn it into inf

@@ -1,5 +1,6 @@
 #include <hush/passes/rdae/conv.hpp>
 
+#include <algorithm>
 #include <cstring>
 
 #include <hush/core/error.hpp>
@@ -12,12 +13,18 @@ namespace {
 
 uint32_t blocksOf(uint32_t channels) { return (channels + 3) / 4; }
 
-// conv.glsl computes output blocks in groups of 4 with a fixed loop: the weights and
-// biases are padded with zeros to whole groups.
-constexpr uint32_t kBlocksPerInvocation = 4;
+// conv.glsl computes output blocks in groups with a fixed loop: groups of 4, or of the
+// layer's block count where it has fewer (the output layer's 3 channels are one block:
+// a group of 4 spent 3/4 of its arithmetic on zero weights). The weights and biases are
+// padded with zeros to whole groups.
+constexpr uint32_t kMaxBlocksPerInvocation = 4;
 constexpr uint32_t kPixels = 8;
+uint32_t blocksPerInvocation(uint32_t outputs) {
+    return std::min(kMaxBlocksPerInvocation, blocksOf(outputs));
+}
 uint32_t paddedOutputBlocks(uint32_t outputs) {
-    return (blocksOf(outputs) + kBlocksPerInvocation - 1) / kBlocksPerInvocation * kBlocksPerInvocation;
+    const uint32_t group = blocksPerInvocation(outputs);
+    return (blocksOf(outputs) + group - 1) / group * group;
 }
 
 // Where input channel i of the concatenation sits in the packed input blocks.
@@ -77,7 +84,9 @@ RdaeTensor addRdaeConvPass(NodeContext& ctx, const std::string& name, const Rdae
               "' take " + std::to_string(weights.inputB));
     check(!b.valid() || b.level == a.level, name, "inputs a and b are at different levels");
 
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get(detail::rdaeShader("conv", format));
+    const uint32_t blockGroup = blocksPerInvocation(weights.outputs);
+    const rhi::ComputePipeline pipeline =
+        ctx.pipelines.get(detail::rdaeShader("conv", format), {{"blocksPerInvocation", double(blockGroup)}});
     rhi::PushConstants params(pipeline);
     const auto la = a.layout(), lb = rdaeTensorLayout(weights.inputB), lo = rdaeTensorLayout(weights.outputs);
     params.set("blocksA", la.blocks).set("tilesA", la.tilesX);
@@ -89,7 +98,7 @@ RdaeTensor addRdaeConvPass(NodeContext& ctx, const std::string& name, const Rdae
     // Enough groups of output blocks to cover every tile of the grid (conv.glsl zeroes
     // the tiles past the last block).
     const uint32_t level = a.level, levels = format.levels,
-                   groups = (lo.tilesX * lo.tilesY + kBlocksPerInvocation - 1) / kBlocksPerInvocation;
+                   groups = (lo.tilesX * lo.tilesY + blockGroup - 1) / blockGroup;
     const bool bIsHistory = inputs.bIsHistory, bPresent = b.valid();
     struct Out {
         graph::TextureHandle features;

@@ -8,16 +8,18 @@
 #include "common/grid.glsl"
 #include "common/normal_power.glsl"
 
-// One invocation filters a row of kRow pixels `step` apart: their 5x5 windows
-// overlap, so each tap texel is fetched once for the row ((kRow + 4) x 5 fetches per
-// resource for kRow pixels instead of kRow x 25) and used at once by every pixel
-// whose window holds it. The host dispatches atrousThreads({width, 1}, step, kRow)
-// columns (svgf/atrous.cpp: kAtrousRow). Every tap is evaluated without a branch:
-// one off the image or without a surface is fetched clamped and weighs exactly 0.
-// With `continue` there instead, as in the one-pixel shader, the row layout was 2x
-// slower than one pixel per invocation (docs/passes/atrous-lattice.md). Each pixel
-// adds its taps in the one-pixel loop's order, and a skipped tap adds +0.
-const int kRow = 4;
+// One invocation filters a kBlock x kBlock block of pixels `step` apart (the a-trous
+// lattice, docs/passes/atrous-lattice.md): their 5x5 windows overlap, so each tap
+// texel is fetched once for the block ((kBlock + 4)^2 fetches per resource for
+// kBlock^2 pixels instead of 25 each) and used at once by every pixel whose window
+// holds it, without being kept. The host dispatches atrousThreads(size, step, kBlock)
+// (svgf/atrous.cpp: kAtrousBlock). Every tap is evaluated without a branch: one off
+// the image or without a surface is fetched clamped and weighs exactly 0. With
+// `continue` there instead, as in the one-pixel shader, the lattice was 2x slower
+// than one pixel per invocation. Each pixel adds its taps in the one-pixel loop's
+// order (rows, then columns), and a skipped tap adds +0.
+const int kBlock = 4;
+const int kBlockPixels = kBlock * kBlock;
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -51,33 +53,38 @@ bool hasSurface(vec4 nd) {
     return dot(nd.xyz, nd.xyz) > 1e-6;
 }
 
-// The row's first pixel: invocation x is residue x % step of cell x / step, whose
-// kRow pixels span kRow * step columns.
-ivec2 rowStart(int step) {
+// The block's first pixel: per axis, invocation i is residue i % step of cell
+// i / step, whose kBlock pixels span kBlock * step pixels.
+ivec2 blockStart(int step) {
     ivec2 i = ivec2(gl_GlobalInvocationID.xy);
-    int cell = i.x / step;
-    return ivec2(cell * kRow * step + (i.x - cell * step), i.y);
+    ivec2 cell = i / step;
+    return cell * kBlock * step + (i - cell * step);
+}
+
+// Pixel k of the block (row-major), in steps from its first pixel.
+ivec2 blockOffset(int k) {
+    return ivec2(k % kBlock, k / kBlock);
 }
 
 void main() {
     ivec2 size = imageSize(filtered);
     int step = params.step;
-    ivec2 first = rowStart(step);
+    ivec2 first = blockStart(step);
     if (!hushInside(first, size)) {
         return;
     }
-    // Per pixel of the row: its centre terms and its sums.
-    vec4 ndP[kRow];
-    vec2 gradient[kRow];
-    float lumP[kRow];
-    float inverseLumScale[kRow];
-    float depthEps[kRow];
-    bool filtering[kRow];
-    vec3 colourSum[kRow];
-    float weightSum[kRow];
-    float varianceSum[kRow];
-    [[unroll]] for (int k = 0; k < kRow; ++k) {
-        ivec2 p = first + ivec2(k * step, 0);
+    // Per pixel of the block: its centre terms and its sums.
+    vec4 ndP[kBlockPixels];
+    vec2 gradient[kBlockPixels];
+    float lumP[kBlockPixels];
+    float inverseLumScale[kBlockPixels];
+    float depthEps[kBlockPixels];
+    bool filtering[kBlockPixels];
+    vec3 colourSum[kBlockPixels];
+    float weightSum[kBlockPixels];
+    float varianceSum[kBlockPixels];
+    [[unroll]] for (int k = 0; k < kBlockPixels; ++k) {
+        ivec2 p = first + blockOffset(k) * step;
         bool inside = hushInside(p, size);
         ivec2 pc = min(p, size - 1);
         ndP[k] = texelFetch(normal_depth, pc, 0);
@@ -92,18 +99,19 @@ void main() {
         weightSum[k] = 0.0;
         varianceSum[k] = 0.0;
     }
-    [[unroll]] for (int dy = -2; dy <= 2; ++dy) {
-        [[unroll]] for (int column = 0; column < kRow + 4; ++column) {
-            ivec2 q = first + ivec2(column - 2, dy) * step;
+    [[unroll]] for (int row = 0; row < kBlock + 4; ++row) {
+        [[unroll]] for (int column = 0; column < kBlock + 4; ++column) {
+            ivec2 q = first + ivec2(column - 2, row - 2) * step;
             bool insideQ = hushInside(q, size);
             ivec2 qc = clamp(q, ivec2(0), size - 1);
             vec4 c = texelFetch(illum_variance, qc, 0);
             vec4 ndQ = texelFetch(normal_depth, qc, 0);
             bool surfaceQ = insideQ && hasSurface(ndQ);
             float lumQ = dot(c.rgb, kRec709);
-            [[unroll]] for (int k = 0; k < kRow; ++k) {
-                int dx = column - 2 - k;
-                if (dx < -2 || dx > 2) {
+            [[unroll]] for (int k = 0; k < kBlockPixels; ++k) {
+                int dx = column - 2 - blockOffset(k).x;
+                int dy = row - 2 - blockOffset(k).y;
+                if (dx < -2 || dx > 2 || dy < -2 || dy > 2) {
                     continue;   // decided at compile time: the loops are unrolled
                 }
                 float w;
@@ -129,8 +137,8 @@ void main() {
             }
         }
     }
-    [[unroll]] for (int k = 0; k < kRow; ++k) {
-        ivec2 p = first + ivec2(k * step, 0);
+    [[unroll]] for (int k = 0; k < kBlockPixels; ++k) {
+        ivec2 p = first + blockOffset(k) * step;
         if (!hushInside(p, size)) {
             continue;
         }

@@ -8,7 +8,7 @@
 namespace hush::passes {
 
 namespace {
-constexpr uint32_t kAtrousRow = 4;   // pixels per invocation: kRow in shaders/svgf/atrous.comp
+constexpr uint32_t kAtrousBlock = 4;   // pixels per invocation and axis: kBlock in shaders/svgf/atrous.comp
 } // namespace
 
 uint32_t svgfAtrousStep(uint32_t level) {
@@ -34,7 +34,7 @@ graph::TextureHandle addSvgfAtrousPass(NodeContext& ctx, const std::string& name
         const auto group = b.bindGroup(pipeline);
         return [=](graph::PassContext& pc) {
             const rhi::Extent2D size = pc.texture(o.filtered).size();
-            pc.dispatch(pipeline, group, {atrousThreads({size.width, 1}, svgfAtrousStep(level), kAtrousRow).width, size.height}, params);
+            pc.dispatch(pipeline, group, atrousThreads(size, svgfAtrousStep(level), kAtrousBlock), params);
         };
     });
     return out.filtered;

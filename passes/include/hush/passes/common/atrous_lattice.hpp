@@ -3,8 +3,7 @@
 // atrous_lattice.glsl): one invocation per block of pixels spaced `step` apart,
 // whose taps overlap, so that each texel is read fewer times.
 //
-// Used by eaw.atrous (4x4 blocks) and svgf.atrous (rows of 4 pixels along x: the
-// x extent only, with block 4): docs/passes/atrous-lattice.md.
+// Used by eaw.atrous and svgf.atrous (4x4 blocks both): docs/passes/atrous-lattice.md.
 #include <cstdint>
 
 #include <hush/rhi/format.hpp>

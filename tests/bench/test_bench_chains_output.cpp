@@ -9,10 +9,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include <hush/core/arguments.hpp>
 #include <hush/core/json.hpp>
 #include <hush/core/read_file.hpp>
 
@@ -23,14 +23,6 @@ namespace {
 std::string environment(const char* name) {
     const char* value = std::getenv(name);
     return value ? value : "";
-}
-
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    return items;
 }
 
 bool finiteNumber(const Json& value) { return value.is_number() && std::isfinite(value.get<double>()); }
@@ -113,7 +105,7 @@ void checkQuality(const Json& quality, const std::vector<std::string>& chains) {
 
 TEST_CASE("hush-bench-chains --quick writes a complete results file", "[.bench-chains-output]") {
     const std::string path = environment("HUSH_BENCH_OUTPUT");
-    const auto chains = splitList(environment("HUSH_BENCH_CHAINS"));
+    const auto chains = hush::core::splitList(environment("HUSH_BENCH_CHAINS"));
     REQUIRE_FALSE(path.empty());
     REQUIRE_FALSE(chains.empty());
     const Json results = hush::core::parseJson(hush::core::readFile(path, "results file"), path);

@@ -167,4 +167,15 @@ void PassContext::dispatch(const rhi::ComputePipeline& pipeline, BindGroupHandle
     pass.end();
 }
 
+void PassContext::dispatchIndirect(const rhi::ComputePipeline& pipeline, BindGroupHandle group, BufferHandle counts,
+                                   const rhi::PushConstants& params, uint64_t offset) {
+    auto pass = encoder_.beginComputePass();
+    pass.setPipeline(pipeline);
+    const auto& bound = boundGroup(graph_, group);
+    pass.setBindGroup(bound.set, bound.groups[parity_]);
+    pass.setPushConstants(params);
+    pass.dispatchWorkgroupsIndirect(buffer(counts), offset);
+    pass.end();
+}
+
 } // namespace hush::graph

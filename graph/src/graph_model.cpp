@@ -29,6 +29,7 @@ rhi::ResourceState toState(Access access) {
     case Access::StorageWrite: return S::StorageWrite;
     case Access::StorageReadWrite: return S::StorageReadWrite;
     case Access::UniformRead: return S::UniformRead;
+    case Access::IndirectRead: return S::IndirectRead;
     case Access::CopySrc: return S::CopySrc;
     case Access::CopyDst: return S::CopyDst;
     }
@@ -42,6 +43,7 @@ const char* toString(Access access) {
     case Access::StorageWrite: return "storage-write";
     case Access::StorageReadWrite: return "storage-read-write";
     case Access::UniformRead: return "uniform-read";
+    case Access::IndirectRead: return "indirect-read";
     case Access::CopySrc: return "copy-src";
     case Access::CopyDst: return "copy-dst";
     }

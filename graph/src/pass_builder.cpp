@@ -53,6 +53,9 @@ BufferHandle PassBuilder::read(const std::string& port, BufferHandle h, const In
 BufferHandle PassBuilder::readUniform(const std::string& port, BufferHandle h, const InputSpec& spec) {
     return addRead(port, h, Access::UniformRead, spec);
 }
+BufferHandle PassBuilder::readIndirect(const std::string& port, BufferHandle h, const InputSpec& spec) {
+    return addRead(port, h, Access::IndirectRead, spec);
+}
 
 template <class Handle>
 Handle PassBuilder::addRead(const std::string& port, Handle h, Access access, const InputSpec& spec) {

@@ -16,7 +16,11 @@ rhi::TextureUsage usageFor(Access access) {
 }
 
 rhi::BufferUsage bufferUsageFor(Access access) {
-    return access == Access::UniformRead ? rhi::BufferUsage::Uniform : rhi::BufferUsage::Storage;
+    switch (access) {
+    case Access::UniformRead: return rhi::BufferUsage::Uniform;
+    case Access::IndirectRead: return rhi::BufferUsage::Indirect | rhi::BufferUsage::Storage;
+    default: return rhi::BufferUsage::Storage;
+    }
 }
 
 // Usages from every live access; outputs and histories are also read back by tools.

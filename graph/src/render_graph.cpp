@@ -124,6 +124,14 @@ TextureHandle RenderGraph::findTexture(std::string_view name) const {
     return {};
 }
 
+BufferHandle RenderGraph::findBuffer(std::string_view name) const {
+    for (uint32_t r = 0; r < model_.resources.size(); ++r) {
+        const auto& res = model_.resources[r];
+        if (res.name == name && res.kind == ResourceKind::Buffer) return {r, res.versionCount - 1};
+    }
+    return {};
+}
+
 TextureHandle RenderGraph::historySource(TextureHandle history) const {
     const uint32_t s = model_.historySource(history.index);
     if (s == kNone) return {};

@@ -193,8 +193,9 @@ void ComputePassEncoder::setPushConstants(const PushConstants& values) {
     if (values.size() > 0) setPushConstants(values.data(), values.size());
 }
 
-void ComputePassEncoder::dispatchWorkgroups(uint32_t x, uint32_t y, uint32_t z) {
-    auto* enc = encoder_;
+namespace {
+// What every dispatch needs bound before it runs.
+void requireReadyToDispatch(const CommandEncoderImpl* enc) {
     if (!enc || !enc->inPass) fail(ErrorKind::InvalidArgument, "dispatch on a compute pass that has ended");
     if (!enc->pipeline) fail(ErrorKind::InvalidArgument, "dispatch in compute pass '" + enc->passLabel + "' before setPipeline");
     const auto& p = *enc->pipeline;
@@ -207,6 +208,12 @@ void ComputePassEncoder::dispatchWorkgroups(uint32_t x, uint32_t y, uint32_t z) 
                                              "' reads " + std::to_string(p.shaderPushConstantBytes) +
                                              " bytes of push constants, " + std::to_string(enc->pushConstantBytesSet) +
                                              " were set");
+}
+} // namespace
+
+void ComputePassEncoder::dispatchWorkgroups(uint32_t x, uint32_t y, uint32_t z) {
+    auto* enc = encoder_;
+    requireReadyToDispatch(enc);
     const auto& limits = enc->device->limits;
     if (x > limits.maxComputeWorkGroupCount[0] || y > limits.maxComputeWorkGroupCount[1] ||
         z > limits.maxComputeWorkGroupCount[2])
@@ -215,6 +222,22 @@ void ComputePassEncoder::dispatchWorkgroups(uint32_t x, uint32_t y, uint32_t z) 
                                          "' exceeds the adapter's maxComputeWorkgroupCount");
     if (x == 0 || y == 0 || z == 0) return;
     enc->device->vk.vkCmdDispatch(enc->commandBuffer, x, y, z);
+}
+
+void ComputePassEncoder::dispatchWorkgroupsIndirect(const Buffer& buffer, uint64_t offset) {
+    auto* enc = encoder_;
+    requireReadyToDispatch(enc);
+    if (!buffer) fail(ErrorKind::InvalidArgument, "indirect dispatch in pass '" + enc->passLabel + "' without a buffer");
+    const auto& desc = buffer.impl()->desc;
+    if (!hasAny(desc.usage, BufferUsage::Indirect))
+        fail(ErrorKind::InvalidArgument, "indirect dispatch in pass '" + enc->passLabel + "': buffer '" + desc.label +
+                                             "' was not created with BufferUsage::Indirect");
+    if (offset % 4 != 0 || offset + 12 > desc.size)
+        fail(ErrorKind::InvalidArgument, "indirect dispatch in pass '" + enc->passLabel + "': offset " +
+                                             std::to_string(offset) + " of buffer '" + desc.label + "' (" +
+                                             std::to_string(desc.size) + " bytes) does not hold 3 aligned uint32");
+    enc->device->vk.vkCmdDispatchIndirect(enc->commandBuffer, buffer.impl()->buffer, offset);
+    enc->retain(buffer.shared());
 }
 
 void ComputePassEncoder::dispatchThreads(uint32_t x, uint32_t y, uint32_t z) {

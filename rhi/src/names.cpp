@@ -77,6 +77,7 @@ std::string_view toString(ResourceState state) {
     case ResourceState::StorageWrite: return "storage-write";
     case ResourceState::StorageReadWrite: return "storage-read-write";
     case ResourceState::UniformRead: return "uniform-read";
+    case ResourceState::IndirectRead: return "indirect-read";
     case ResourceState::HostRead: return "host-read";
     case ResourceState::HostWrite: return "host-write";
     case ResourceState::General: return "general";
@@ -90,6 +91,7 @@ bool isReadOnly(ResourceState state) {
     case ResourceState::SampledRead:
     case ResourceState::StorageRead:
     case ResourceState::UniformRead:
+    case ResourceState::IndirectRead:
     case ResourceState::HostRead: return true;
     default: return false;
     }

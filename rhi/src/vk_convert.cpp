@@ -81,6 +81,9 @@ VkState toVk(ResourceState state) {
                 VK_IMAGE_LAYOUT_GENERAL};
     case ResourceState::UniformRead:
         return {compute, VK_ACCESS_2_UNIFORM_READ_BIT, VK_IMAGE_LAYOUT_GENERAL};
+    case ResourceState::IndirectRead:
+        return {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | compute,
+                VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_GENERAL};
     case ResourceState::HostRead:
         return {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT, VK_IMAGE_LAYOUT_GENERAL};
     case ResourceState::HostWrite:

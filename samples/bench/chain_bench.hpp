@@ -67,6 +67,11 @@ struct PassRow {
     // Unique bytes: every resource the pass reads counted once, every one it writes
     // once (extent x format size), whatever the kernel's footprint.
     uint64_t bytesRead = 0, bytesWritten = 0;
+    // An indirect dispatch over the tiles an earlier pass listed (passes/common/
+    // tile_list.hpp): it moves the listed tiles' share of those bytes, which the host
+    // does not know, so it has no GB/s or roofline fraction (0) and its bytes are not
+    // in the frame's.
+    bool listedTiles = false;
     double gbps = 0.0;       // (bytesRead + bytesWritten) / median ms
     double ofRoofline = 0.0; // gbps / the roofline's gbps at the same size
     // Counted arithmetic (a convolution's 9 x inputs x outputs per pixel of its level).
@@ -83,7 +88,7 @@ struct TimingResult {
     Stats totalGpuMs;              // first pass begin to last pass end
     Stats cpuRecordMs;
     double sumOfPassMedians = 0.0;
-    uint64_t bytes = 0;            // over all passes
+    uint64_t bytes = 0;            // over all passes but the listed-tiles ones
     double gbps = 0.0, ofRoofline = 0.0;   // bytes / median total
     double multiplyAdds = 0.0;             // counted, over all passes
     double multiplyAddsPerPixel = 0.0;     // of the frame (the padded frame's work / its pixels)

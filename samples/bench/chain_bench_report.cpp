@@ -53,8 +53,12 @@ void printTiming(const TimingResult& t, const Roofline& roofline) {
     std::printf("| pass | median ms | min | max | MiB read | MiB written | GB/s | of roofline |\n"
                 "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     for (const auto& p : t.passes)
-        std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.2f | %.2f | %.0f %% |\n", p.name.c_str(), p.gpuMs.median,
-                    p.gpuMs.min, p.gpuMs.max, mib(p.bytesRead), mib(p.bytesWritten), p.gbps, 100.0 * p.ofRoofline);
+        if (p.listedTiles)
+            std::printf("| %s | %.3f | %.3f | %.3f | listed tiles of %.2f | of %.2f | - | - |\n", p.name.c_str(),
+                        p.gpuMs.median, p.gpuMs.min, p.gpuMs.max, mib(p.bytesRead), mib(p.bytesWritten));
+        else
+            std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.2f | %.2f | %.0f %% |\n", p.name.c_str(), p.gpuMs.median,
+                        p.gpuMs.min, p.gpuMs.max, mib(p.bytesRead), mib(p.bytesWritten), p.gbps, 100.0 * p.ofRoofline);
     std::printf("| **frame** (sum of pass medians %.3f) | %.3f | %.3f | %.3f | %.2f (both) | | %.2f | %.0f %% |\n",
                 t.sumOfPassMedians, t.totalGpuMs.median, t.totalGpuMs.min, t.totalGpuMs.max, mib(t.bytes), t.gbps,
                 100.0 * t.ofRoofline);
@@ -163,6 +167,7 @@ std::string toJson(const Options& o, const AdapterInfo& adapter, bool validation
                     ", \"gpu_ms\": " + statsJson(p.gpuMs) + ", \"bytes_read\": " + std::to_string(p.bytesRead) +
                     ", \"bytes_written\": " + std::to_string(p.bytesWritten) + ", \"gbps\": " + jsonNumber(p.gbps) +
                     ", \"of_roofline\": " + jsonNumber(p.ofRoofline) +
+                    ", \"listed_tiles\": " + (p.listedTiles ? "true" : "false") +
                     (p.multiplyAdds > 0.0 ? ", \"multiply_adds\": " + jsonNumber(p.multiplyAdds) + ", \"gflops\": " +
                                                 jsonNumber(p.gflops) + ", \"of_compute_roofline\": " +
                                                 jsonNumber(p.ofComputeRoofline)

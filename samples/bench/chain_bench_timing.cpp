@@ -25,6 +25,7 @@ namespace {
 
 struct PassBytes {
     uint64_t read = 0, written = 0;
+    bool listedTiles = false;   // dispatched indirectly (PassRow::listedTiles)
 };
 
 uint64_t resourceBytes(const graph::GraphModel& model, uint32_t resource) {
@@ -46,6 +47,7 @@ std::map<std::string, PassBytes> bytesByPass(const graph::GraphModel& model) {
         std::set<uint32_t> reads, writes;
         for (const auto& access : model.passes[p].accesses) {
             if (access.resource == graph::kNone) continue;   // an optional port left unconnected
+            out[model.passes[p].name].listedTiles |= access.access == graph::Access::IndirectRead;
             if (graph::isRead(access.access)) reads.insert(access.resource);
             if (graph::isWrite(access.access)) writes.insert(access.resource);
         }
@@ -171,9 +173,12 @@ TimingResult measureChainTiming(const rhi::Device& device, const std::string& ch
         if (const auto it = bytes.find(name); it != bytes.end()) {
             row.bytesRead = it->second.read;
             row.bytesWritten = it->second.written;
+            row.listedTiles = it->second.listedTiles;
         }
-        row.gbps = gigabytesPerSecond(row.bytesRead + row.bytesWritten, row.gpuMs.median);
-        row.ofRoofline = roofline.gbps > 0.0 ? row.gbps / roofline.gbps : 0.0;
+        if (!row.listedTiles) {
+            row.gbps = gigabytesPerSecond(row.bytesRead + row.bytesWritten, row.gpuMs.median);
+            row.ofRoofline = roofline.gbps > 0.0 ? row.gbps / roofline.gbps : 0.0;
+        }
         if (const auto it = work.find(name); it != work.end()) {
             row.multiplyAdds = it->second;
             row.gflops = 2.0 * row.multiplyAdds / (row.gpuMs.median * 1e6);
@@ -181,7 +186,7 @@ TimingResult measureChainTiming(const rhi::Device& device, const std::string& ch
             result.multiplyAdds += row.multiplyAdds;
         }
         result.sumOfPassMedians += row.gpuMs.median;
-        result.bytes += row.bytesRead + row.bytesWritten;
+        if (!row.listedTiles) result.bytes += row.bytesRead + row.bytesWritten;
         result.passes.push_back(std::move(row));
     }
     result.gbps = gigabytesPerSecond(result.bytes, result.totalGpuMs.median);

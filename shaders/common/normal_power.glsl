@@ -11,11 +11,12 @@
 #ifndef HUSH_COMMON_NORMAL_POWER_GLSL
 #define HUSH_COMMON_NORMAL_POWER_GLSL
 
-// `cosine` >= 0 (GLSL leaves pow() undefined for a negative base; for a base of 0
-// and an exponent <= 0 too, so callers that allow those exclude cosine == 0).
+// `cosine` >= 0 and `exponent` >= 0 (GLSL leaves pow() undefined for a negative
+// base, and for a base of 0 with an exponent of 0: that case is 1 here, as on the
+// CPU, so that sigmaN = 0 weighs every neighbour, perpendicular or without a normal).
 float normalPower(float cosine, float exponent, uint whole) {
     if (whole == 0u) {
-        return pow(cosine, exponent);
+        return exponent == 0.0 ? 1.0 : pow(cosine, exponent);
     }
     // `whole` is a specialization constant: the driver folds every test below, and
     // drops the squarings past its highest bit.

@@ -4,15 +4,11 @@ namespace hush::graph_test {
 
 using namespace hush::graph;
 
-namespace {
-
 rhi::ComputePipeline makePipeline(const rhi::Device& device, std::string_view name) {
     const std::string label = "graph/" + std::string(name);
     auto module = device.createShaderModule({.label = label, .code = graph_test_shaders::find(name)});
     return device.createComputePipeline({.label = label, .module = module});
 }
-
-} // namespace
 
 Pipelines makePipelines(const rhi::Device& device) {
     return {makePipeline(device, "fill"), makePipeline(device, "combine"), makePipeline(device, "copy"),

@@ -32,6 +32,8 @@ struct Pipelines {
     rhi::ComputePipeline accumulate;   // history accumulation, see accumulate.comp
 };
 Pipelines makePipelines(const rhi::Device& device = test::gpu().device);
+// Any one of tests/shaders/graph by name ("tally_workgroups"), labelled "graph/<name>".
+rhi::ComputePipeline makePipeline(const rhi::Device& device, std::string_view name);
 
 struct CombineParams {
     uint32_t mulA = 1;

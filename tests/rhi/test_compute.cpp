@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "support/gpu_context.hpp"
 #include "support/half.hpp"
 
 using namespace hush::rhi;
 using namespace hush::test;
+using hush::Error;
+using hush::ErrorKind;
 
 namespace {
 
@@ -287,5 +290,54 @@ TEST_CASE("compute: submissions are numbered in order and complete in order", "[
     // The last fill in submission order wins.
     const auto values = valuesOf<uint32_t>(readBufferMapped(buffer, 0, 256, ResourceState::CopySrc));
     CHECK(std::all_of(values.begin(), values.end(), [](uint32_t v) { return v == 3; }));
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(validation);
+}
+
+TEST_CASE("compute: an indirect dispatch runs the workgroup counts its buffer holds, and needs Indirect usage",
+          "[compute][gpu]") {
+    // compute/coverage.comp (8x4 workgroups) over a 67x45 grid, dispatched with counts
+    // (3, 5, 1) read from a buffer: exactly the top-left 24x20 cells are written.
+    ValidationScope validation;
+    auto& device = gpu().device;
+    constexpr uint32_t kW = 67, kH = 45;
+    const uint64_t bytes = uint64_t(kW) * kH * 4;
+    auto pipeline = computePipeline("compute/coverage");
+    auto cells = device.createBuffer(
+        {.label = "cells", .size = bytes, .usage = BufferUsage::Storage | BufferUsage::CopySrc | BufferUsage::CopyDst});
+    auto counts = device.createBuffer({.label = "counts", .size = 16, .usage = BufferUsage::Indirect | BufferUsage::CopyDst});
+    auto notIndirect = device.createBuffer({.label = "plain", .size = 16, .usage = BufferUsage::Storage});
+    const uint32_t groups[4] = {3, 5, 1, 0};
+    gpu().queue().writeBuffer(counts, 0, std::as_bytes(std::span(groups)));
+    auto group = device.createBindGroup(
+        {.label = "coverage", .layout = pipeline.getBindGroupLayout(0), .entries = {{.name = "Cells", .buffer = cells}}});
+    const uint32_t params[2] = {kW, kH};
+    std::optional<Error> refused, offsetRefused;
+    Readback back;
+    submitAndWait([&](CommandEncoder& encoder) {
+        encoder.bufferBarrier({{cells, ResourceState::Undefined, ResourceState::CopyDst},
+                               {counts, ResourceState::CopyDst, ResourceState::IndirectRead}});
+        encoder.fillBuffer(cells, 0xFFFFFFFFu);
+        encoder.bufferBarrier({{cells, ResourceState::CopyDst, ResourceState::StorageWrite}});
+        auto pass = encoder.beginComputePass({.label = "coverage"});
+        pass.setPipeline(pipeline);
+        pass.setBindGroup(0, group);
+        pass.setPushConstants(params, sizeof(params));
+        refused = errorFrom([&] { pass.dispatchWorkgroupsIndirect(notIndirect); });
+        offsetRefused = errorFrom([&] { pass.dispatchWorkgroupsIndirect(counts, 8); });
+        pass.dispatchWorkgroupsIndirect(counts);
+        pass.end();
+        encoder.bufferBarrier({{cells, ResourceState::StorageWrite, ResourceState::CopySrc}});
+        back = Readback::ofBuffer(encoder, cells, 0, bytes);
+    });
+    const auto got = back.values<uint32_t>();
+    std::vector<uint32_t> expected(size_t(kW) * kH, 0xFFFFFFFFu);
+    for (uint32_t y = 0; y < 20; ++y)
+        for (uint32_t x = 0; x < 24; ++x) expected[size_t(y) * kW + x] = 1 + x + kW * y;
+    CHECK(got == expected);
+    REQUIRE(refused);
+    CHECK(refused->kind() == ErrorKind::InvalidArgument);
+    CHECK_THAT(refused->what(), Catch::Contains("'plain'") && Catch::Contains("BufferUsage::Indirect"));
+    REQUIRE(offsetRefused);
+    CHECK_THAT(offsetRefused->what(), Catch::Contains("offset 8") && Catch::Contains("'counts'"));
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(validation);
 }

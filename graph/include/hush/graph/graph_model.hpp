@@ -66,7 +66,11 @@ enum class ResourceOrigin : uint8_t {
 };
 
 // How a pass uses a resource. Writes produce the next version.
-enum class Access : uint8_t { SampledRead, StorageRead, StorageWrite, StorageReadWrite, UniformRead, CopySrc, CopyDst };
+// IndirectRead: a buffer that holds a dispatch's workgroup counts and is read by its
+// shader too (PassBuilder::readIndirect).
+enum class Access : uint8_t {
+    SampledRead, StorageRead, StorageWrite, StorageReadWrite, UniformRead, IndirectRead, CopySrc, CopyDst
+};
 bool isWrite(Access access);
 bool isRead(Access access);
 rhi::ResourceState toState(Access access);

@@ -44,6 +44,10 @@ public:
     TextureHandle sample(const std::string& port, TextureHandle texture, const InputSpec& spec = {});
     BufferHandle read(const std::string& port, BufferHandle buffer, const InputSpec& spec = {});
     BufferHandle readUniform(const std::string& port, BufferHandle buffer, const InputSpec& spec = {});
+    // A buffer whose first 12 bytes are this pass's workgroup counts
+    // (PassContext::dispatchIndirect), also bound read-only to the shader's buffer of
+    // the port's name.
+    BufferHandle readIndirect(const std::string& port, BufferHandle buffer, const InputSpec& spec = {});
 
     // Writes return the next version; use it for every later access.
     TextureHandle write(const std::string& port, TextureHandle texture);

@@ -43,6 +43,11 @@ public:
         dispatch(pipeline, group, threads, layers, &params);
     }
 
+    // One dispatch whose workgroup counts the GPU wrote into `counts` (declared with
+    // PassBuilder::readIndirect by this pass), at byte `offset`.
+    void dispatchIndirect(const rhi::ComputePipeline& pipeline, BindGroupHandle group, BufferHandle counts,
+                          const rhi::PushConstants& params, uint64_t offset = 0);
+
     PassContext(const CompiledGraph& graph, rhi::CommandEncoder& encoder, uint32_t parity, bool historyValid,
                 uint64_t frame, uint64_t historyFrame)
         : graph_(graph), encoder_(encoder), parity_(parity), historyValid_(historyValid), frame_(frame),

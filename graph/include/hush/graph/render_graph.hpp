@@ -111,9 +111,10 @@ public:
 
     // Introspection.
     const GraphModel& model() const { return model_; }
-    // The newest version of the transient or imported texture called `name` (invalid
-    // when there is none), and of the texture a history is bound to.
+    // The newest version of the transient or imported texture (buffer) called `name`
+    // (invalid when there is none), and of the texture a history is bound to.
     TextureHandle findTexture(std::string_view name) const;
+    BufferHandle findBuffer(std::string_view name) const;
     TextureHandle historySource(TextureHandle history) const;
     const GraphTimings& timings() const { return timings_; }
     MemoryReport memory() const;

@@ -84,6 +84,11 @@ public:
     void dispatchWorkgroups(uint32_t x, uint32_t y = 1, uint32_t z = 1);
     // Enough workgroups of the bound pipeline's reflected size to cover x*y*z threads.
     void dispatchThreads(uint32_t x, uint32_t y = 1, uint32_t z = 1);
+    // Workgroup counts read by the device from `buffer` at `offset` (three uint32: x,
+    // y, z), written there by an earlier dispatch: work whose size only the GPU knows,
+    // such as the tiles a classifying pass listed. The buffer needs BufferUsage::Indirect
+    // and must be in ResourceState::IndirectRead.
+    void dispatchWorkgroupsIndirect(const Buffer& buffer, uint64_t offset = 0);
     void end();
 
 private:

@@ -16,6 +16,7 @@ enum class ResourceState : uint8_t {
     StorageWrite,      // imageStore / buffer write in a compute shader
     StorageReadWrite,  // both in one dispatch
     UniformRead,       // uniform buffer
+    IndirectRead,      // a dispatch's workgroup counts, and read by that dispatch's shader
     HostRead,          // mapped and read by the CPU after the GPU wrote it
     HostWrite,         // written by the CPU before the GPU reads it
     General,           // anything, any stage: for interop hand-offs to an engine

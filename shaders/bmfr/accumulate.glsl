@@ -7,14 +7,17 @@
 // The history's colour and sample count are read through the same renormalised
 // footprint (Sec. 3.1: "Also the sample count data is sampled using the same custom
 // bilinear sampling and the result is rounded to the closest integer value").
-#include "common/grid.glsl"
-#include "common/reprojection.glsl"
-
+//
+// Every pixel from bmfr/accumulate*.comp (with fallbackInListedTiles, 2x2 footprints
+// only); the reprojection's listed tiles, every footprint, from
+// bmfr/accumulate_fallback*.comp: common/footprint_tiles.glsl.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform texture2D current;   // this frame's sample, rgb
 layout(set = 0, binding = 1) uniform texture2D reprojection;
 layout(set = 0, binding = 2) uniform texture2D history;   // rgb colour, a sample count
+#define HUSH_TILE_LIST_BINDING 4
+#include "common/footprint_tiles.glsl"
 
 layout(push_constant) uniform Params {
     float minWeight;     // in (0, 1], checked on the CPU
@@ -23,7 +26,7 @@ layout(push_constant) uniform Params {
 } params;
 
 void main() {
-    ivec2 p = hushPixel();
+    ivec2 p = footprintPixel(imageSize(accumulated));
     if (!hushInside(p, imageSize(accumulated))) {
         return;
     }
@@ -35,7 +38,10 @@ void main() {
         imageStore(accumulated, p, bmfrStorable(vec4(x, 1.0)));
         return;
     }
-    vec4 prev = fetchFootprint(history, f);
+    if (footprintDeferred(f)) {
+        return;
+    }
+    vec4 prev = fetchHistory(history, f);
     // The count is an integer in [1, cap] per tap; its weighted mean is rounded.
     float n = min(floor(clamp(prev.a, 0.0, params.countCap) + 0.5) + 1.0, params.countCap);
     float a = max(params.minWeight, 1.0 / n);   // n >= 1

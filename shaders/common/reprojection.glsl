@@ -87,6 +87,21 @@ vec4 fetchFootprint(texture2D history, ReprojectionFootprint f) {
     return value;
 }
 
+// fetchFootprint of a footprint of width 2 (its weights past the 2x2 are 0): the
+// same sum in the same order, from 4 fetches instead of 9.
+vec4 fetchFootprint2x2(texture2D history, ReprojectionFootprint f) {
+    vec4 value = vec4(0.0);
+    for (int j = 0; j < 2; ++j) {
+        for (int i = 0; i < 2; ++i) {
+            float w = f.weight[j * 3 + i];
+            if (w > 0.0) {
+                value += w * texelFetch(history, f.origin + ivec2(i, j), 0);
+            }
+        }
+    }
+    return value;
+}
+
 // One history value through a decision: false where disoccluded (value = 0).
 bool fetchReprojected(texture2D history, vec4 decision, out vec4 value) {
     ReprojectionFootprint f;

@@ -1,15 +1,20 @@
 // passes/common/tile_list: the nodes that split a rare, costly case into listed tiles
 // (common/reproject's 3x3 fallback, svgf/variance_estimate's 7x7 estimate) list
 // exactly the tiles where some pixel needs it, reset the list every frame, and give
-// the CPU reference's output in the listed tiles and the others alike.
+// the CPU reference's output in the listed tiles and the others alike; the decision's
+// consumers (svgf temporal, bmfr accumulate) read 3x3 footprints in its listed tiles.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <set>
 
+#include <hush/passes/bmfr/accumulate.hpp>
 #include <hush/passes/common/reproject.hpp>
 #include <hush/passes/common/tile_list.hpp>
+#include <hush/passes/svgf/temporal_accumulation.hpp>
 #include <hush/passes/svgf/variance_estimate.hpp>
 
+#include "reference/bmfr_accumulate.hpp"
 #include "reference/common_reproject.hpp"
 #include "reference/common_surface.hpp"
 #include "reference/svgf_temporal_accumulation.hpp"
@@ -166,5 +171,72 @@ TEST_CASE("tile list: svgf variance lists the tiles with a short history on a su
                                   1e-5f, 1e-4f);
         CHECK(listedTiles(t.graph, list, {w, h}, tile) == std::set<uint32_t>{4});
     }
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("tile list: svgf temporal and bmfr accumulate read 3x3 footprints in the reprojection's listed tiles",
+          "[svgf-temporal][bmfr-accumulate][tile-list]") {
+    test::ValidationScope scope;
+    // The moving box of the reprojection case above, three frames: the first without
+    // history, then twice the same motion, so that the third frame's 3x3 footprints
+    // (x = 18) read what the second frame's listed passes wrote.
+    const uint32_t w = 40, h = 20;
+    auto prev = wallWithBox(w, h, 18), cur = wallWithBox(w, h, 20);
+    auto motion = makeImage(w, h, 2, [&](uint32_t x, uint32_t y, uint32_t c) {
+        return c == 0 && x >= 20 && x < 26 && y >= 10 && y <= 15 ? -2.0f : 0.0f;
+    });
+    NodeHarness t({w, h});
+    auto mv = t.input("motion", motion, rhi::Format::RG32Float);
+    const passes::Surface current{t.input("cur.nd", cur.normalDepth), t.input("cur.gm", cur.gradientMesh)};
+    const passes::Surface previous{t.input("prev.nd", prev.normalDepth), t.input("prev.gm", prev.gradientMesh)};
+    auto illumination = t.input("illumination", FloatImage(w, h, 4));
+    auto decision = passes::addReprojectPass(t.ctx, "reproject", mv, current, previous);
+    REQUIRE(passes::reprojectionFallbackTiles(t.graph, decision).valid());
+    const auto temporal = passes::addSvgfTemporalPass(t.ctx, "temporal", illumination, decision);
+    const auto accumulated = passes::addBmfrAccumulatePass(t.ctx, "accumulate", illumination, decision);
+    for (auto out : {decision, temporal.color, temporal.moments, accumulated}) t.graph.markOutput(out);
+    t.graph.compile();
+    const auto names = t.graph.passOrder();
+    CHECK(std::count(names.begin(), names.end(), "temporal.fallback") == 1);
+    CHECK(std::count(names.begin(), names.end(), "accumulate.fallback") == 1);
+
+    reference::SvgfTemporalImages svgfRef{FloatImage(w, h, 4), FloatImage(w, h, 4)};
+    FloatImage bmfrRef(w, h, 4);
+    std::vector<int> fallbackPixels;
+    for (int frame = 0; frame < 3; ++frame) {
+        INFO("frame " << frame);
+        const auto illum = randomImage(w, h, 4, 0.0f, 3.0f, 40 + frame);
+        t.update("illumination", illum);
+        t.graph.execute();
+        t.graph.waitIdle();
+        const auto d = readOutput(t.graph, decision);
+        const bool valid = frame > 0;
+        svgfRef = reference::svgfTemporal(illum, d, svgfRef, {}, valid);
+        bmfrRef = reference::bmfrAccumulate(illum, d, bmfrRef, {}, valid);
+        HUSH_REQUIRE_IMAGES_MATCH(readOutput(t.graph, temporal.color), svgfRef.color, 1e-5f, 1e-5f);
+        HUSH_REQUIRE_IMAGES_MATCH(readOutput(t.graph, temporal.moments), svgfRef.moments, 1e-5f, 1e-5f);
+        HUSH_REQUIRE_IMAGES_MATCH(readOutput(t.graph, accumulated), bmfrRef, 1e-5f, 1e-5f);
+        fallbackPixels.push_back(0);
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < w; ++x)
+                fallbackPixels.back() += d.at(x, y, 3) == float(passes::ReprojectionMode::Fallback3x3) ? 1 : 0;
+    }
+    // The wall revealed at x = 18 reads 3x3 footprints in frames 1 and 2.
+    CHECK(fallbackPixels[0] == 0);
+    CHECK(fallbackPixels[1] > 0);
+    CHECK(fallbackPixels[2] == fallbackPixels[1]);
+    HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
+}
+
+TEST_CASE("tile list: a decision not made by addReprojectPass has no tile list, and its consumer is one pass",
+          "[svgf-temporal][tile-list]") {
+    test::ValidationScope scope;
+    NodeHarness t({16, 8});
+    auto decision = t.input("decision", reference::identityDecision(16, 8));
+    CHECK_FALSE(passes::reprojectionFallbackTiles(t.graph, decision).valid());
+    const auto temporal = passes::addSvgfTemporalPass(t.ctx, "temporal", t.input("illumination", FloatImage(16, 8, 4)),
+                                                      decision);
+    t.runOnce(temporal.color);
+    CHECK(t.graph.passOrder() == std::vector<std::string>{"temporal"});
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }

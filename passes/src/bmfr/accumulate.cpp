@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <hush/core/error.hpp>
+#include <hush/passes/common/reproject.hpp>
 #include <hush/passes/settings_push_constants.hpp>
 
 namespace hush::passes {
@@ -18,12 +19,17 @@ uint32_t bmfrAccumulateCountCap(const BmfrAccumulateSettings& settings) {
     return uint32_t(std::ceil(1.0 / double(w) - 1e-5));
 }
 
-graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle current,
-                                           graph::TextureHandle reprojection, const BmfrAccumulateSettings& settings) {
-    const uint32_t cap = bmfrAccumulateCountCap(settings);
+namespace {
+
+// "<name>.fallback": every pixel of the tiles where the reprojection ran its 3x3
+// fallback, every footprint (shaders/common/footprint_tiles.glsl).
+graph::TextureHandle addFallbackPass(NodeContext& ctx, const std::string& name, graph::TextureHandle current,
+                                     graph::TextureHandle reprojection, graph::BufferHandle tiles,
+                                     graph::TextureHandle history, graph::TextureHandle classified,
+                                     const BmfrAccumulateSettings& settings, uint32_t cap) {
     const bool half = settings.format == rhi::Format::RGBA16Float;
-    // One shader per output format: the image's format qualifier must be literal.
-    const rhi::ComputePipeline pipeline = ctx.pipelines.get(half ? "bmfr/accumulate_rgba16f" : "bmfr/accumulate");
+    const rhi::ComputePipeline pipeline =
+        ctx.pipelines.get(half ? "bmfr/accumulate_fallback_rgba16f" : "bmfr/accumulate_fallback");
     rhi::PushConstants params(pipeline);
     setFromSettings(params, settings);
     params.set("countCap", float(cap));
@@ -31,12 +37,44 @@ graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& 
     struct Out {
         graph::TextureHandle accumulated;
     };
+    return ctx.graph.addPass<Out>(name + ".fallback", [&](graph::PassBuilder& b, Out& o) {
+        b.sample("current", current);
+        b.sample("reprojection", reprojection);
+        b.sample("history", history);
+        const auto list = b.readIndirect("tiles", tiles);
+        o.accumulated = b.readWrite("accumulated", classified);
+        const auto group = b.bindGroup(pipeline);
+        return [=](graph::PassContext& pc) mutable {
+            params.set(historyValid, pc.historyValid() ? 1u : 0u);
+            pc.dispatchIndirect(pipeline, group, list, params);
+        };
+    }).accumulated;
+}
+
+} // namespace
+
+graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& name, graph::TextureHandle current,
+                                           graph::TextureHandle reprojection, const BmfrAccumulateSettings& settings) {
+    const uint32_t cap = bmfrAccumulateCountCap(settings);
+    const bool half = settings.format == rhi::Format::RGBA16Float;
+    const graph::BufferHandle tiles = reprojectionFallbackTiles(ctx.graph, reprojection);
+    // One shader per output format: the image's format qualifier must be literal.
+    const rhi::ComputePipeline pipeline = ctx.pipelines.get(
+        half ? "bmfr/accumulate_rgba16f" : "bmfr/accumulate", {{"fallbackInListedTiles", tiles.valid() ? 1.0 : 0.0}});
+    rhi::PushConstants params(pipeline);
+    setFromSettings(params, settings);
+    params.set("countCap", float(cap));
+    const auto historyValid = params.slot("historyValid", rhi::ScalarType::Uint32);
+    struct Out {
+        graph::TextureHandle accumulated, history;
+    };
     const auto out = ctx.graph.addPass<Out>(name, [&](graph::PassBuilder& b, Out& o) {
         b.sample("current", current);
         b.sample("reprojection", reprojection);
         const auto accumulated = b.create(name, fullSize(settings.format));
         // The node's own output last frame: colour in rgb, sample count in alpha.
-        b.sample("history", ctx.graph.history(accumulated));
+        o.history = ctx.graph.history(accumulated);
+        b.sample("history", o.history);
         o.accumulated = b.write("accumulated", accumulated);
         const auto group = b.bindGroup(pipeline);
         return [=](graph::PassContext& pc) mutable {
@@ -44,7 +82,8 @@ graph::TextureHandle addBmfrAccumulatePass(NodeContext& ctx, const std::string& 
             pc.dispatch(pipeline, group, pc.texture(o.accumulated).size(), params);
         };
     });
-    return out.accumulated;
+    if (!tiles.valid()) return out.accumulated;
+    return addFallbackPass(ctx, name, current, reprojection, tiles, out.history, out.accumulated, settings, cap);
 }
 
 } // namespace hush::passes

@@ -70,4 +70,10 @@ graph::TextureHandle addReprojectPass(NodeContext& ctx, const std::string& name,
     return addReprojectPass(ctx, name, motion, current, surfaceHistory(ctx, current), settings);
 }
 
+graph::BufferHandle reprojectionFallbackTiles(const graph::RenderGraph& graph, graph::TextureHandle decision) {
+    const auto& resources = graph.model().resources;
+    if (decision.index >= resources.size()) return {};
+    return graph.findBuffer(resources[decision.index].name + ".tiles");
+}
+
 } // namespace hush::passes

@@ -60,7 +60,9 @@ template <class V> void describe(V&& v, ReprojectSettings& s) {
     v.field("fallback3x3", s.fallback3x3);
 }
 
-// Adds pass "<name>"; returns the decision texture (rgba32f, transient "<name>").
+// Adds passes "<name>.tiles", "<name>" and "<name>.fallback" (the 3x3 fallback in
+// the tiles that need it, docs/passes/reprojection.md); returns the decision texture
+// (rgba32f, transient "<name>").
 // `motion` is read as xy; `current` and `previous` are this and last frame's
 // Surface (any textures of that layout).
 graph::TextureHandle addReprojectPass(NodeContext& ctx, const std::string& name, graph::TextureHandle motion,
@@ -69,5 +71,12 @@ graph::TextureHandle addReprojectPass(NodeContext& ctx, const std::string& name,
 // The usual case: `previous` is surfaceHistory(ctx, current).
 graph::TextureHandle addReprojectPass(NodeContext& ctx, const std::string& name, graph::TextureHandle motion,
                                       const Surface& current, const ReprojectSettings& settings = {});
+
+// The tile list ("<name>.tiles") of the reprojection that made `decision`: the 8x8
+// tiles where it tried the 3x3 fallback, the only ones that can hold mode-2 pixels.
+// Invalid when `decision` is not addReprojectPass's (an imported decision, say).
+// A consumer then fetches 2x2 footprints everywhere and 3x3 ones only in those
+// tiles (shaders/common/footprint_tiles.glsl): passes "<name>" and "<name>.fallback".
+graph::BufferHandle reprojectionFallbackTiles(const graph::RenderGraph& graph, graph::TextureHandle decision);
 
 } // namespace hush::passes

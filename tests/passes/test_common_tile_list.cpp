@@ -62,25 +62,37 @@ reference::SurfaceImages wallWithBox(uint32_t w, uint32_t h, int boxLeft) {
     return s;
 }
 
+// 40x20 in 8x8 tiles (5 x 3). A box (mesh 2) over a wall (mesh 1) moves 2 pixels
+// right, from x [18, 24) to [20, 26), rows 10..15: the revealed wall at x 18..19
+// fails its 2x2 taps, all in tile (2, 1) = index 7. Its inputs, imported.
+constexpr uint32_t kBoxW = 40, kBoxH = 20;
+struct MovingBox {
+    reference::SurfaceImages prev = wallWithBox(kBoxW, kBoxH, 18), cur = wallWithBox(kBoxW, kBoxH, 20);
+    FloatImage motion = makeImage(kBoxW, kBoxH, 2, [](uint32_t x, uint32_t y, uint32_t c) {
+        return c == 0 && x >= 20 && x < 26 && y >= 10 && y <= 15 ? -2.0f : 0.0f;
+    });
+    NodeHarness t{{kBoxW, kBoxH}};
+    graph::TextureHandle reproject() {
+        auto mv = t.input("motion", motion, rhi::Format::RG32Float);
+        const passes::Surface current{t.input("cur.nd", cur.normalDepth), t.input("cur.gm", cur.gradientMesh)};
+        const passes::Surface previous{t.input("prev.nd", prev.normalDepth), t.input("prev.gm", prev.gradientMesh)};
+        return passes::addReprojectPass(t.ctx, "reproject", mv, current, previous);
+    }
+};
+
 } // namespace
 
 TEST_CASE("tile list: reproject lists the one tile where the 3x3 fallback is needed, and none once still",
           "[reproject][tile-list]") {
     test::ValidationScope scope;
-    // 40x20 in 8x8 tiles (5 x 3). A box (mesh 2) over a wall (mesh 1) moves 2 pixels
-    // right, from x [18, 24) to [20, 26), rows 10..15: the revealed wall at x 18..19
-    // fails its 2x2 taps, all in tile (2, 1) = index 7.
-    const uint32_t w = 40, h = 20;
+    // MovingBox: tile 7 needs the fallback.
+    const uint32_t w = kBoxW, h = kBoxH;
     const rhi::Extent2D tile{8, 8};
-    auto prev = wallWithBox(w, h, 18), cur = wallWithBox(w, h, 20);
-    auto motion = makeImage(w, h, 2, [&](uint32_t x, uint32_t y, uint32_t c) {
-        return c == 0 && x >= 20 && x < 26 && y >= 10 && y <= 15 ? -2.0f : 0.0f;
-    });
-    NodeHarness t({w, h});
-    auto mv = t.input("motion", motion, rhi::Format::RG32Float);
-    const passes::Surface current{t.input("cur.nd", cur.normalDepth), t.input("cur.gm", cur.gradientMesh)};
-    const passes::Surface previous{t.input("prev.nd", prev.normalDepth), t.input("prev.gm", prev.gradientMesh)};
-    auto decision = passes::addReprojectPass(t.ctx, "reproject", mv, current, previous);
+    MovingBox box;
+    auto& t = box.t;
+    const auto &prev = box.prev, &cur = box.cur;
+    const auto& motion = box.motion;
+    auto decision = box.reproject();
     const auto list = exposeTileList(t.graph, "reproject.tiles");
 
     t.runOnce(decision);   // history invalid: every pixel disoccluded, nothing listed
@@ -180,17 +192,11 @@ TEST_CASE("tile list: svgf temporal and bmfr accumulate read 3x3 footprints in t
     // The moving box of the reprojection case above, three frames: the first without
     // history, then twice the same motion, so that the third frame's 3x3 footprints
     // (x = 18) read what the second frame's listed passes wrote.
-    const uint32_t w = 40, h = 20;
-    auto prev = wallWithBox(w, h, 18), cur = wallWithBox(w, h, 20);
-    auto motion = makeImage(w, h, 2, [&](uint32_t x, uint32_t y, uint32_t c) {
-        return c == 0 && x >= 20 && x < 26 && y >= 10 && y <= 15 ? -2.0f : 0.0f;
-    });
-    NodeHarness t({w, h});
-    auto mv = t.input("motion", motion, rhi::Format::RG32Float);
-    const passes::Surface current{t.input("cur.nd", cur.normalDepth), t.input("cur.gm", cur.gradientMesh)};
-    const passes::Surface previous{t.input("prev.nd", prev.normalDepth), t.input("prev.gm", prev.gradientMesh)};
+    const uint32_t w = kBoxW, h = kBoxH;
+    MovingBox box;
+    auto& t = box.t;
     auto illumination = t.input("illumination", FloatImage(w, h, 4));
-    auto decision = passes::addReprojectPass(t.ctx, "reproject", mv, current, previous);
+    auto decision = box.reproject();
     REQUIRE(passes::reprojectionFallbackTiles(t.graph, decision).valid());
     const auto temporal = passes::addSvgfTemporalPass(t.ctx, "temporal", illumination, decision);
     const auto accumulated = passes::addBmfrAccumulatePass(t.ctx, "accumulate", illumination, decision);

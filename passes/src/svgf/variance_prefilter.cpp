@@ -3,7 +3,7 @@
 namespace hush::passes {
 
 namespace {
-constexpr uint32_t kPrefilterRow = 4;   // pixels per invocation: kRow in shaders/svgf/variance_prefilter.comp
+constexpr uint32_t kPrefilterBlock = 8;   // pixels per invocation per axis: kBlock in shaders/svgf/variance_prefilter.comp
 } // namespace
 
 graph::TextureHandle addSvgfVariancePrefilterPass(NodeContext& ctx, const std::string& name,
@@ -19,7 +19,8 @@ graph::TextureHandle addSvgfVariancePrefilterPass(NodeContext& ctx, const std::s
         const auto group = b.bindGroup(pipeline);
         return [=](graph::PassContext& pc) {
             const rhi::Extent2D size = pc.texture(o.prefilteredVariance).size();
-            pc.dispatch(pipeline, group, {(size.width + kPrefilterRow - 1) / kPrefilterRow, size.height});
+            pc.dispatch(pipeline, group,
+                        {(size.width + kPrefilterBlock - 1) / kPrefilterBlock, (size.height + kPrefilterBlock - 1) / kPrefilterBlock});
         };
     });
     return out.prefilteredVariance;

@@ -5,6 +5,7 @@
 // (binding 1), with its format qualifier first.
 #ifndef HUSH_COMMON_SANITIZE_GLSL
 #define HUSH_COMMON_SANITIZE_GLSL
+#extension GL_EXT_control_flow_attributes : require
 #include "common/grid.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -19,17 +20,27 @@ layout(push_constant) uniform Params {
     float replacement;
 } params;
 
+const int kRow = 4;   // pixels per invocation, along x (sanitize.cpp: kSanitizeRow)
+
 void main() {
-    ivec2 p = hushPixel();
-    if (!hushInside(p, imageSize(dst))) {
+    ivec2 size = imageSize(dst);
+    ivec2 first = ivec2(gl_GlobalInvocationID.x * kRow, gl_GlobalInvocationID.y);
+    if (!hushInside(first, size)) {
         return;
     }
-    vec4 v = texelFetch(src, p, 0);
-    bvec4 bad = bvec4(uvec4(isnan(v)) | uvec4(isinf(v)));
-    if (any(bad)) {
-        atomicAdd(counts.values[params.slot], 1u);
+    uint replaced = 0u;
+    [[unroll]] for (int k = 0; k < kRow; ++k) {
+        ivec2 p = first + ivec2(k, 0);
+        if (p.x < size.x) {
+            vec4 v = texelFetch(src, p, 0);
+            bvec4 bad = bvec4(uvec4(isnan(v)) | uvec4(isinf(v)));
+            replaced += any(bad) ? 1u : 0u;
+            vec4 finite = mix(v, vec4(params.replacement), bad);
+            imageStore(dst, p, clamp(finite, vec4(params.lo), vec4(params.hi)));
+        }
     }
-    vec4 finite = mix(v, vec4(params.replacement), bad);
-    imageStore(dst, p, clamp(finite, vec4(params.lo), vec4(params.hi)));
+    if (replaced != 0u) {
+        atomicAdd(counts.values[params.slot], replaced);
+    }
 }
 #endif

@@ -24,8 +24,11 @@ TEST_CASE("sanitize replaces and counts non-finite values per channel", "[common
     color.at(2, 1, 2) = inf;
     color.at(2, 1, 1) = -inf;   // same pixel: counted once
     color.at(5, 5, 0) = -3.0f;  // negative radiance: clamped, not counted
+    color.at(8, 3, 0) = nan;    // two in one invocation's row of 4 (x 8..11): both counted
+    color.at(9, 3, 1) = inf;
     auto depth = randomImage(w, h, 1, 0.5f, 9.0f, 8);
     depth.at(0, 6) = -inf;
+    depth.at(12, 2) = nan;      // in the last, partial row of 4 (x 12..15 of 13)
     auto meshid = makeImage(w, h, 1, [](uint32_t x, uint32_t, uint32_t) { return float(x % 3); });
     meshid.at(4, 4) = nan;
 
@@ -46,8 +49,8 @@ TEST_CASE("sanitize replaces and counts non-finite values per channel", "[common
 
     auto counts = readOutputBuffer(graph, out.counts);
     REQUIRE(counts.size() == passes::kInputChannelCount);
-    CHECK(counts[size_t(InputChannel::Color)] == 2);
-    CHECK(counts[size_t(InputChannel::Depth)] == 1);
+    CHECK(counts[size_t(InputChannel::Color)] == 4);
+    CHECK(counts[size_t(InputChannel::Depth)] == 2);
     CHECK(counts[size_t(InputChannel::MeshId)] == 1);
     CHECK(counts[size_t(InputChannel::Albedo)] == 0);
 
@@ -76,7 +79,7 @@ TEST_CASE("sanitize replaces and counts non-finite values per channel", "[common
     // The next frame starts counting from zero.
     graph.execute();
     graph.waitIdle();
-    CHECK(readOutputBuffer(graph, out.counts)[size_t(InputChannel::Color)] == 2);
+    CHECK(readOutputBuffer(graph, out.counts)[size_t(InputChannel::Color)] == 4);
     HUSH_REQUIRE_NO_VALIDATION_MESSAGES(scope);
 }
 

@@ -5,6 +5,8 @@
 namespace hush::passes {
 
 namespace {
+constexpr uint32_t kSanitizeRow = 4;   // pixels per invocation along x: kRow in shaders/common/sanitize.glsl
+
 const char* shaderFor(rhi::Format format) {
     switch (format) {
     case rhi::Format::R32Float: return "common/sanitize_r32f";
@@ -73,7 +75,10 @@ SanitizedInputs addSanitizePass(NodeContext& ctx, const std::string& name, const
             o.sanitized = b.write("dst", b.create(stage, fullSize(info.format)));
             o.counts = b.readWrite("counts", out.counts);
             const auto group = b.bindGroup(pipeline);
-            return [=](graph::PassContext& pc) { pc.dispatch(pipeline, group, pc.texture(o.sanitized).size(), params); };
+            return [=](graph::PassContext& pc) {
+                const rhi::Extent2D size = pc.texture(o.sanitized).size();
+                pc.dispatch(pipeline, group, {(size.width + kSanitizeRow - 1) / kSanitizeRow, size.height}, params);
+            };
         });
         out.inputs[info.channel] = stageOut.sanitized;
         out.counts = stageOut.counts;

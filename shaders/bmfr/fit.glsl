@@ -23,12 +23,14 @@
 #include "bmfr/features.glsl"
 
 const uint kBlock = HUSH_BMFR_FIT_BLOCK;
-const uint kRows = 8u;                              // matrix rows per invocation
-const uint kThreads = kBlock * kBlock / kRows;      // 8, 32, 128, 512
-layout(local_size_x = HUSH_BMFR_FIT_BLOCK * HUSH_BMFR_FIT_BLOCK / 8) in;
+// Matrix rows per invocation (fit.cpp: fitRows): 16, 8 for an 8-pixel block.
+#define HUSH_BMFR_FIT_ROWS (HUSH_BMFR_FIT_BLOCK == 8 ? 8 : 16)
+const uint kRows = HUSH_BMFR_FIT_ROWS;
+const uint kThreads = kBlock * kBlock / kRows;      // 8, 16, 64, 256
+layout(local_size_x = HUSH_BMFR_FIT_BLOCK * HUSH_BMFR_FIT_BLOCK / HUSH_BMFR_FIT_ROWS) in;
 const uint kMaxFeatures = 17u;
 const uint kColumns = kMaxFeatures + 3u;            // colour columns at kMaxFeatures + c
-const uint kMaxSubgroups = kThreads / 4u;           // the host refuses subgroups under 4
+const uint kMaxSubgroups = (kThreads + 3u) / 4u;    // the host refuses subgroups under 4
 
 layout(set = 0, binding = 0) uniform texture2D illumination;
 layout(set = 0, binding = 1) uniform texture2D normal;
@@ -111,7 +113,7 @@ void reduceColumnsFrom(uint op, uint first, float values[kColumns]) {
     }
     barrier();
     uint tid = gl_LocalInvocationID.x;
-    // An 8x8 block has 8 invocations for up to 20 columns: each combines every kThreads-th.
+    // A workgroup of 8 or 16 invocations serves up to 20 columns: each combines every kThreads-th.
     for (uint c = first + tid; c < kColumns; c += kThreads) {
         if (!isColumnUsed(c)) continue;
         float v = partial[c * kMaxSubgroups];

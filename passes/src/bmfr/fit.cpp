@@ -99,12 +99,17 @@ std::vector<rhi::ConstantEntry> fitConstants(const BmfrFitSettings& settings) {
 }
 
 // The fit shader of one block size and output format: the block size fixes the
-// workgroup (B^2 / 8 invocations, 8 matrix rows each, in registers: fit.glsl).
+// workgroup (B^2 / rows invocations, fitRows(B) matrix rows each, in registers: fit.glsl).
 std::string fitShader(uint32_t blockSize, rhi::Format format) {
     return "bmfr/fit" + std::to_string(blockSize) + (format == rhi::Format::RGBA16Float ? "_rgba16f" : "");
 }
 
-uint32_t fitThreads(uint32_t blockSize) { return blockSize * blockSize / 8; }
+// Matrix rows per invocation: HUSH_BMFR_FIT_ROWS in fit.glsl. 16 rows (half the
+// invocations of 8, so half the lanes meet at each of the QR's barriers) made the fit
+// 1.2-1.3x faster on lavapipe at 16- and 32-pixel blocks (docs/benchmarks.md); an
+// 8-pixel block keeps 8, so that its workgroup still fills one 8-lane subgroup.
+uint32_t fitRows(uint32_t blockSize) { return blockSize == 8 ? 8 : 16; }
+uint32_t fitThreads(uint32_t blockSize) { return blockSize * blockSize / fitRows(blockSize); }
 
 // One block size's pipeline with its own push constants (they belong to a pipeline)
 // and the slots the pass writes every frame.
@@ -135,7 +140,7 @@ std::vector<uint32_t> fitBlockSizes(uint32_t blockSize) {
 }
 
 // fit.glsl reduces through subgroups and sizes its shared memory for subgroups of at
-// least 4 invocations; a 64-pixel block needs 512 invocations per workgroup.
+// least 4 invocations; a 64-pixel block needs 256 invocations per workgroup.
 void checkDevice(const rhi::Device& device, uint32_t blockSize, const std::string& name) {
     const auto& limits = device.adapterInfo().limits;
     if (limits.subgroupSize < 4)

@@ -16,7 +16,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0) uniform texture2D current;   // this frame's sample, rgb
 layout(set = 0, binding = 1) uniform texture2D reprojection;
 layout(set = 0, binding = 2) uniform texture2D history;   // rgb colour, a sample count
+#ifdef HUSH_LISTED_TILES
 #define HUSH_TILE_LIST_BINDING 4
+#endif
 #include "common/footprint_tiles.glsl"
 
 layout(push_constant) uniform Params {

@@ -10,16 +10,16 @@
 //                               dispatched indirectly over the reprojection's list.
 // Lavapipe runs the nine taps of fetchFootprint for every pixel whatever its mode
 // (docs/passes/common.md, "Tile lists"). The including shader defines
-// HUSH_TILE_LIST_BINDING when HUSH_LISTED_TILES is, and uses 8x8 workgroups.
+// HUSH_TILE_LIST_BINDING when HUSH_LISTED_TILES is (and only then: no other variant
+// binds the list), and uses 8x8 workgroups.
 // Needs GL_EXT_samplerless_texture_functions.
 #ifndef HUSH_COMMON_FOOTPRINT_TILES_GLSL
 #define HUSH_COMMON_FOOTPRINT_TILES_GLSL
 #include "common/grid.glsl"
 #include "common/reprojection.glsl"
 
-#ifdef HUSH_LISTED_TILES
 #include "common/tile_list.glsl"
-#else
+#ifndef HUSH_LISTED_TILES
 layout(constant_id = 0) const uint fallbackInListedTiles = 0u;
 #endif
 
@@ -28,11 +28,7 @@ const uvec2 kFootprintTile = uvec2(8, 8);
 
 // This invocation's pixel.
 ivec2 footprintPixel(ivec2 size) {
-#ifdef HUSH_LISTED_TILES
-    return ivec2(hushTile(size, kFootprintTile) * kFootprintTile + gl_LocalInvocationID.xy);
-#else
-    return hushPixel();
-#endif
+    return hushTilePixel(size, kFootprintTile);
 }
 
 // True where the listed variant does this pixel instead (a 3x3 footprint).

@@ -62,7 +62,7 @@ bool consistent(Centre c, ivec2 tap, vec2 offset, ivec2 size) {
 
 void main() {
     ivec2 size = imageSize(reprojection);
-    ivec2 p = ivec2(hushTile(size, kTile) * kTile + gl_LocalInvocationID.xy);
+    ivec2 p = hushTilePixel(size, kTile);
     if (!hushInside(p, size)) {
         return;
     }

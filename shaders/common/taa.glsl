@@ -24,8 +24,8 @@ layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D resolved;
 layout(set = 0, binding = 4) uniform texture2D reprojection;
 #if defined(HUSH_TAA_CLASSIFY) || defined(HUSH_LISTED_TILES)
 #define HUSH_TILE_LIST_BINDING 5
-#include "common/tile_list.glsl"
 #endif
+#include "common/tile_list.glsl"
 const uvec2 kTile = uvec2(8, 8);   // one workgroup
 
 layout(push_constant) uniform Params {
@@ -65,15 +65,6 @@ bool wholeFootprint(vec4 decision) {
     uint positive = 1u | (frac.x > 0.0 ? 2u : 0u) | (frac.y > 0.0 ? 4u : 0u) |
                     (frac.x > 0.0 && frac.y > 0.0 ? 8u : 0u);
     return uint(decision.w + 0.5) == kReprojectBilinear && uint(decision.z + 0.5) == positive;
-}
-
-// This invocation's pixel.
-ivec2 taaPixel(ivec2 size) {
-#ifdef HUSH_LISTED_TILES
-    return ivec2(hushTile(size, kTile) * kTile + gl_LocalInvocationID.xy);
-#else
-    return hushPixel();
-#endif
 }
 
 // Last frame's output at this pixel's previous position; false where there is none.
@@ -170,7 +161,7 @@ vec3 clipToBox(vec3 h, Box b) {
 
 void main() {
     ivec2 size = imageSize(resolved);
-    ivec2 p = taaPixel(size);
+    ivec2 p = hushTilePixel(size, kTile);
     if (!hushInside(p, size)) {
         return;
     }

@@ -10,16 +10,20 @@
 // then 1, 1); [3] unused; [4 .. 4 + n) one flag per tile, 1 once listed; [4 + n ..
 // 4 + 2n) the listed tiles' indices (row-major), n = the image's tile count.
 // common/clear_tile_list.comp resets it every frame. The including shader defines
-// HUSH_TILE_LIST_BINDING. Needs a tile to be exactly one workgroup.
+// HUSH_TILE_LIST_BINDING in its classifying and listed variants; a variant without
+// it (a pass that neither lists nor reads the list) declares no buffer and works on
+// its own tile. Needs a tile to be exactly one workgroup.
 #ifndef HUSH_COMMON_TILE_LIST_GLSL
 #define HUSH_COMMON_TILE_LIST_GLSL
 
-#ifdef HUSH_LISTED_TILES
+#if defined(HUSH_LISTED_TILES) && !defined(HUSH_TILE_LIST_BINDING)
+#error "a listed variant (HUSH_LISTED_TILES) reads the tile list: define HUSH_TILE_LIST_BINDING"
+#elif defined(HUSH_LISTED_TILES)
 layout(set = 0, binding = HUSH_TILE_LIST_BINDING, std430) readonly buffer TileListBlock {
     uint header[4];
     uint entries[];
 } tiles;
-#else
+#elif defined(HUSH_TILE_LIST_BINDING)
 layout(set = 0, binding = HUSH_TILE_LIST_BINDING, std430) buffer TileListBlock {
     uint header[4];
     uint entries[];
@@ -43,7 +47,17 @@ uvec2 hushTile(ivec2 size, uvec2 tile) {
 #endif
 }
 
-#ifndef HUSH_LISTED_TILES
+// This invocation's first pixel in that tile, `stride` pixels apart along each axis
+// (1, 1: one pixel per invocation; kRow, 1: a row of kRow pixels each).
+ivec2 hushTilePixel(ivec2 size, uvec2 tile, uvec2 stride) {
+    return ivec2(hushTile(size, tile) * tile + gl_LocalInvocationID.xy * stride);
+}
+
+ivec2 hushTilePixel(ivec2 size, uvec2 tile) {
+    return hushTilePixel(size, tile, uvec2(1u));
+}
+
+#if !defined(HUSH_LISTED_TILES) && defined(HUSH_TILE_LIST_BINDING)
 // Lists this workgroup's tile for the listed pass, once however many of its
 // invocations call it (the flag's exchange lets exactly one through).
 void hushListTile(ivec2 size, uvec2 tile) {

@@ -16,7 +16,9 @@ layout(set = 0, binding = 2) uniform texture2D color_history;
 layout(set = 0, binding = 3) uniform texture2D moments_history;
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D color;
 layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D moments;
+#ifdef HUSH_LISTED_TILES
 #define HUSH_TILE_LIST_BINDING 6
+#endif
 #include "common/footprint_tiles.glsl"
 
 layout(push_constant) uniform Params {

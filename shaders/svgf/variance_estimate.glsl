@@ -71,7 +71,7 @@ float shortHistoryVariance(vec2 mu, float n) {
 
 void main() {
     ivec2 size = imageSize(illum_variance);
-    ivec2 first = ivec2(hushTile(size, kTile) * kTile + gl_LocalInvocationID.xy * uvec2(kRow, 1));
+    ivec2 first = hushTilePixel(size, kTile, uvec2(kRow, 1));
     if (!hushInside(first, size)) {
         return;
     }

@@ -23,10 +23,10 @@
 #include "bmfr/features.glsl"
 
 const uint kBlock = HUSH_BMFR_FIT_BLOCK;
-// Matrix rows per invocation (fit.cpp: fitRows): 16, 8 for an 8-pixel block.
-#define HUSH_BMFR_FIT_ROWS (HUSH_BMFR_FIT_BLOCK == 8 ? 8 : 16)
+// Matrix rows per invocation (fit.cpp: fitRows, which says why): min(B, 32).
+#define HUSH_BMFR_FIT_ROWS (HUSH_BMFR_FIT_BLOCK < 32 ? HUSH_BMFR_FIT_BLOCK : 32)
 const uint kRows = HUSH_BMFR_FIT_ROWS;
-const uint kThreads = kBlock * kBlock / kRows;      // 8, 16, 64, 256
+const uint kThreads = kBlock * kBlock / kRows;      // 8, 16, 32, 128
 layout(local_size_x = HUSH_BMFR_FIT_BLOCK * HUSH_BMFR_FIT_BLOCK / HUSH_BMFR_FIT_ROWS) in;
 const uint kMaxFeatures = 17u;
 const uint kColumns = kMaxFeatures + 3u;            // colour columns at kMaxFeatures + c

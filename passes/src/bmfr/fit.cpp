@@ -1,5 +1,6 @@
 #include <hush/passes/bmfr/fit.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <hush/core/error.hpp>
@@ -104,11 +105,13 @@ std::string fitShader(uint32_t blockSize, rhi::Format format) {
     return "bmfr/fit" + std::to_string(blockSize) + (format == rhi::Format::RGBA16Float ? "_rgba16f" : "");
 }
 
-// Matrix rows per invocation: HUSH_BMFR_FIT_ROWS in fit.glsl. 16 rows (half the
-// invocations of 8, so half the lanes meet at each of the QR's barriers) made the fit
-// 1.2-1.3x faster on lavapipe at 16- and 32-pixel blocks (docs/benchmarks.md); an
-// 8-pixel block keeps 8, so that its workgroup still fills one 8-lane subgroup.
-uint32_t fitRows(uint32_t blockSize) { return blockSize == 8 ? 8 : 16; }
+// Matrix rows per invocation: HUSH_BMFR_FIT_ROWS in fit.glsl. min(B, 32): an
+// invocation owns one pixel column of the block (of two at B = 64), so B (128 at 64)
+// invocations meet at each of the QR's barriers instead of B^2 / 8. On lavapipe, 16
+// rows instead of 8 made the fit 1.2-1.3x faster at 16- and 32-pixel blocks, and 32
+// instead of 16 another 1.08-1.13x at 32; 64 rows at 32 were slower (register spills:
+// docs/benchmarks.md). An 8-pixel block keeps 8 invocations, one 8-lane subgroup.
+uint32_t fitRows(uint32_t blockSize) { return std::min(blockSize, 32u); }
 uint32_t fitThreads(uint32_t blockSize) { return blockSize * blockSize / fitRows(blockSize); }
 
 // One block size's pipeline with its own push constants (they belong to a pipeline)

@@ -133,7 +133,7 @@ BmfrBlockGrid bmfrBlockGrid(rhi::Extent2D image, uint32_t blockSize, bool offset
 // Adds "<name>" (one compute workgroup per block) and returns the fitted illumination
 // (settings.format, rgba32f by default, full size; rgb = T alpha, a = illumination's alpha). `illumination` is
 // the accumulated, demodulated noisy colour (rgb). Each block's matrix lives in its
-// workgroup's registers (B^2 / 16 invocations, 8 for B = 8), so the node needs no buffer and
+// workgroup's registers (B^2 / min(B, 32) invocations), so the node needs no buffer and
 // follows size changes. Throws hush::Error: InvalidArgument on bad settings or a
 // missing guide texture, Unsupported where the device's subgroups are under 4
 // invocations or a fixed blockSize needs more invocations than a workgroup allows.

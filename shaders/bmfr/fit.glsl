@@ -113,7 +113,7 @@ void reduceColumnsFrom(uint op, uint first, float values[kColumns]) {
     }
     barrier();
     uint tid = gl_LocalInvocationID.x;
-    // A workgroup of 8 or 16 invocations serves up to 20 columns: each combines every kThreads-th.
+    // 8- and 16-pixel blocks have 8 and 16 invocations for up to 20 columns: each combines every kThreads-th.
     for (uint c = first + tid; c < kColumns; c += kThreads) {
         if (!isColumnUsed(c)) continue;
         float v = partial[c * kMaxSubgroups];
